@@ -1,0 +1,469 @@
+#include "core/io/gmsh_model.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+#include "core/geometry/predicates.h"
+#include "core/io/gmsh_session.h"
+#include "core/mesh/build_adjacency.h"
+#include "core/mesh/check_mesh.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+std::string type_name(int type) {
+  std::string name;
+  int dim = 0, order = 0, nn = 0, npn = 0;
+  std::vector<double> lc;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, nn, lc, npn);
+  } catch (...) {
+    name = "type " + std::to_string(type);
+  }
+  return name;
+}
+
+std::string check_summary(const MeshCheck& c) {
+  std::string s;
+  for (std::size_t i = 0; i < c.problems.size() && i < 3; ++i) s += (i ? "; " : "") + c.problems[i];
+  if (c.problems.size() > 3) s += "; ...";
+  return s;
+}
+
+}  // namespace
+
+MeshData mesh_from_gmsh(int dim, const std::string& what) {
+  MeshData out;
+  gmsh_checked("cannot read the mesh of " + what, [&] {
+    ModelInfo info;
+    gmsh::model::getCurrent(info.name);
+    gmsh::vectorpair ents;
+    gmsh::model::getEntities(ents);
+    // Highest dimension with elements.
+    int max_dim = -1;
+    for (const auto& [d, t] : ents) {
+      std::vector<int> types;
+      gmsh::model::mesh::getElementTypes(types, d, t);
+      if (!types.empty()) max_dim = std::max(max_dim, d);
+    }
+    if (max_dim < 0) throw InputError(what + " has no mesh elements (empty mesh)");
+    if (dim < 0) dim = max_dim;
+    if (dim != 2 && dim != 3) throw InputError(what + ": only 2D triangle and 3D tetrahedral meshes are supported (highest element dimension is " + std::to_string(max_dim) + ")");
+    if (max_dim < dim) throw InputError(what + " has no " + std::to_string(dim) + "D elements");
+    out.dim = dim;
+
+    for (const auto& [d, t] : ents) {
+      ModelEntity e;
+      e.dim = d;
+      e.tag = t;
+      if (d > 0) {
+        gmsh::vectorpair b;
+        gmsh::model::getBoundary({{d, t}}, b, false, true, false);
+        for (const auto& [bd, bt] : b) e.boundary.push_back(bt);
+      }
+      info.entities.push_back(e);
+    }
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups);
+    for (const auto& [d, t] : groups) {
+      PhysicalGroup g;
+      g.dim = d;
+      g.tag = t;
+      gmsh::model::getPhysicalName(d, t, g.name);
+      gmsh::model::getEntitiesForPhysicalGroup(d, t, g.entities);
+      info.groups.push_back(g);
+    }
+
+    // Nodes, classified on the entity they belong to.
+    std::vector<std::size_t> all_tags;
+    std::vector<double> all_xyz, par;
+    gmsh::model::mesh::getNodes(all_tags, all_xyz, par, -1, -1, false, false);
+    const std::size_t nv = all_tags.size();
+    std::unordered_map<std::size_t, int> index;
+    index.reserve(nv * 2);
+    std::vector<double> xyz(3 * nv);
+    std::vector<VertexClass> vclass(nv);
+    for (std::size_t i = 0; i < nv; ++i) {
+      if (!index.emplace(all_tags[i], static_cast<int>(i)).second)
+        throw InputError(what + ": node tag " + std::to_string(all_tags[i]) + " is duplicated");
+      for (int k = 0; k < 3; ++k) {
+        xyz[3 * i + k] = all_xyz[3 * i + k];
+        if (!std::isfinite(all_xyz[3 * i + k]))
+          throw InputError(what + ": node " + std::to_string(all_tags[i]) + " has a NaN or infinite coordinate");
+      }
+      vclass[i].dim = static_cast<std::int8_t>(dim);
+    }
+    for (const auto& [d, t] : ents) {
+      std::vector<std::size_t> tags;
+      std::vector<double> c, p;
+      gmsh::model::mesh::getNodes(tags, c, p, d, t, false, false);
+      for (std::size_t tag : tags) {
+        auto it = index.find(tag);
+        if (it == index.end()) continue;
+        vclass[it->second].dim = static_cast<std::int8_t>(d);
+        vclass[it->second].entity = t;
+      }
+    }
+    auto vid = [&](std::size_t tag) {
+      auto it = index.find(tag);
+      if (it == index.end())
+        throw InputError(what + ": an element references node " + std::to_string(tag) + ", which does not exist");
+      return it->second;
+    };
+
+    // Elements, entity by entity.
+    std::vector<int> cells, cell_entity, facets, facet_entity;
+    std::vector<std::size_t> cell_tags, facet_tags;
+    for (const auto& [d, t] : ents) {
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> etags, enodes;
+      gmsh::model::mesh::getElements(types, etags, enodes, d, t);
+      for (std::size_t k = 0; k < types.size(); ++k) {
+        const int type = types[k];
+        const auto& tg = etags[k];
+        const auto& nd = enodes[k];
+        if (d == dim) {
+          const int want = dim == 3 ? 4 : 2;
+          if (type != want)
+            throw InputError(what + ": unsupported element type '" + type_name(type) + "' in " +
+                             (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
+                             " (cvtmesh optimizes linear " + (dim == 3 ? "tetrahedra" : "triangles") + " only)");
+          const int npe = dim + 1;
+          for (std::size_t e = 0; e < tg.size(); ++e) {
+            for (int j = 0; j < npe; ++j) cells.push_back(vid(nd[npe * e + j]));
+            cell_entity.push_back(t);
+            cell_tags.push_back(tg[e]);
+          }
+        } else if (d == dim - 1) {
+          const int want = dim == 3 ? 2 : 1;
+          if (type != want)
+            throw InputError(what + ": unsupported element type '" + type_name(type) + "' on " +
+                             (dim == 3 ? "surface " : "curve ") + std::to_string(t) +
+                             " (expected linear " + (dim == 3 ? "triangles" : "lines") + ")");
+          const int npe = dim;
+          for (std::size_t e = 0; e < tg.size(); ++e) {
+            for (int j = 0; j < npe; ++j) facets.push_back(vid(nd[npe * e + j]));
+            facet_entity.push_back(t);
+            facet_tags.push_back(tg[e]);
+          }
+        } else if (d < dim - 1) {
+          if (type != 15 && type != 1)
+            throw InputError(what + ": unsupported element type '" + type_name(type) + "' on entity (" +
+                             std::to_string(d) + "," + std::to_string(t) + ")");
+          ElementBlock b;
+          b.dim = d;
+          b.entity = t;
+          b.gmsh_type = type;
+          b.tags = tg;
+          for (std::size_t n : nd) b.nodes.push_back(vid(n));
+          info.extra.push_back(std::move(b));
+        } else {
+          throw InputError(what + ": has " + std::to_string(d) + "D elements ('" + type_name(type) +
+                           "') but is read as a " + std::to_string(dim) + "D mesh");
+        }
+      }
+    }
+    if (cells.empty()) throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") + " (empty mesh)");
+
+    if (dim == 3) {
+      TetMesh& m = out.tet;
+      m.xyz = std::move(xyz);
+      m.vclass = std::move(vclass);
+      m.node_tags = all_tags;
+      m.tets = std::move(cells);
+      m.tet_region = std::move(cell_entity);
+      m.tet_tags = std::move(cell_tags);
+      m.tris = std::move(facets);
+      m.tri_surface = std::move(facet_entity);
+      m.tri_tags = std::move(facet_tags);
+      m.model = std::move(info);
+      long bad = 0;
+      std::size_t first_bad = 0;
+      for (int t = 0; t < m.nb_tets(); ++t) {
+        const int* v = &m.tets[4 * t];
+        if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0) {
+          if (!bad) first_bad = m.tet_tags[t];
+          ++bad;
+        }
+      }
+      if (bad)
+        throw InputError(what + ": " + std::to_string(bad) + " tetrahedra are inverted or flat (first: element " +
+                         std::to_string(first_bad) + ")");
+      build_adjacency(m);
+      const MeshCheck c = check_mesh(m);
+      if (!c.ok) throw InputError(what + ": invalid tetrahedral mesh: " + check_summary(c));
+    } else {
+      TriMesh2& m = out.tri;
+      const std::size_t n = all_tags.size();
+      // Planarity: every node of the 2D mesh at the same z (relative tolerance).
+      double zmin = 1e300, zmax = -1e300, extent = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        zmin = std::min(zmin, xyz[3 * i + 2]);
+        zmax = std::max(zmax, xyz[3 * i + 2]);
+        extent = std::max({extent, std::fabs(xyz[3 * i]), std::fabs(xyz[3 * i + 1])});
+      }
+      if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+        throw InputError(what + ": the triangle mesh is not planar (z varies from " + std::to_string(zmin) +
+                         " to " + std::to_string(zmax) + "); 2D optimization needs a mesh in a plane z = const");
+      m.z0 = n ? zmin : 0;
+      m.xy.resize(2 * n);
+      for (std::size_t i = 0; i < n; ++i) {
+        m.xy[2 * i] = xyz[3 * i];
+        m.xy[2 * i + 1] = xyz[3 * i + 1];
+      }
+      m.vclass = std::move(vclass);
+      m.node_tags = all_tags;
+      m.tris = std::move(cells);
+      m.tri_region = std::move(cell_entity);
+      m.tri_tags = std::move(cell_tags);
+      m.edges = std::move(facets);
+      m.edge_curve = std::move(facet_entity);
+      m.edge_tags = std::move(facet_tags);
+      m.model = std::move(info);
+      // Orientation per surface: clockwise surfaces are stored counter-clockwise.
+      std::map<int, std::pair<long, long>> sign;  // surface -> (ccw, cw)
+      for (int t = 0; t < m.nb_tris(); ++t) {
+        const int* v = &m.tris[3 * t];
+        const double o = orient2d(m.point(v[0]), m.point(v[1]), m.point(v[2]));
+        if (o > 0) ++sign[m.tri_region[t]].first;
+        else if (o < 0) ++sign[m.tri_region[t]].second;
+        else throw InputError(what + ": triangle " + std::to_string(m.tri_tags[t]) + " is flat (zero area)");
+      }
+      for (const auto& [s, c] : sign) {
+        if (c.first && c.second)
+          throw InputError(what + ": surface " + std::to_string(s) + " has " + std::to_string(std::min(c.first, c.second)) +
+                           " inverted triangles (mixed orientation)");
+        if (c.second) m.cw_surfaces.push_back(s);
+      }
+      for (int t = 0; t < m.nb_tris(); ++t)
+        if (std::binary_search(m.cw_surfaces.begin(), m.cw_surfaces.end(), m.tri_region[t]))
+          std::swap(m.tris[3 * t + 1], m.tris[3 * t + 2]);
+      build_adjacency2(m);
+      const MeshCheck c = check_mesh(m);
+      if (!c.ok) throw InputError(what + ": invalid triangle mesh: " + check_summary(c));
+    }
+  });
+  return out;
+}
+
+void complete_model_info(MeshData& data) {
+  ModelInfo& info = data.model();
+  std::set<std::pair<int, int>> have;
+  for (const auto& e : info.entities) have.insert({e.dim, e.tag});
+  auto ensure = [&](int d, int t) {
+    if (have.insert({d, t}).second) info.entities.push_back({d, t, {}});
+  };
+  if (data.dim == 3) {
+    TetMesh& m = data.tet;
+    for (int r : m.tet_region) ensure(3, r);
+    for (int s : m.tri_surface) ensure(2, s);
+    if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices())) m.vclass.assign(m.nb_vertices(), {3, 0});
+    for (int f = 0; f < m.nb_tris(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        VertexClass& c = m.vclass[m.tris[3 * f + k]];
+        if (c.entity == 0 || c.dim == 3) c = {2, m.tri_surface[f]};
+      }
+    for (int t = 0; t < m.nb_tets(); ++t)
+      if (m.tets[4 * t] >= 0)
+        for (int k = 0; k < 4; ++k) {
+          VertexClass& c = m.vclass[m.tets[4 * t + k]];
+          if (c.entity == 0) c = {3, m.tet_region[t]};
+        }
+    for (auto& c : m.vclass) {
+      if (c.entity == 0) c = {3, m.tet_region.empty() ? 1 : m.tet_region[0]};
+      ensure(c.dim, c.entity);
+    }
+  } else {
+    TriMesh2& m = data.tri;
+    for (int r : m.tri_region) ensure(2, r);
+    for (int c : m.edge_curve) ensure(1, c);
+    if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices())) m.vclass.assign(m.nb_vertices(), {2, 0});
+    for (int e = 0; e < m.nb_edges(); ++e)
+      for (int k = 0; k < 2; ++k) {
+        VertexClass& c = m.vclass[m.edges[2 * e + k]];
+        if (c.entity == 0 || c.dim == 2) c = {1, m.edge_curve[e]};
+      }
+    for (int t = 0; t < m.nb_tris(); ++t)
+      if (m.tris[3 * t] >= 0)
+        for (int k = 0; k < 3; ++k) {
+          VertexClass& c = m.vclass[m.tris[3 * t + k]];
+          if (c.entity == 0) c = {2, m.tri_region[t]};
+        }
+    for (auto& c : m.vclass) {
+      if (c.entity == 0) c = {2, m.tri_region.empty() ? 1 : m.tri_region[0]};
+      ensure(c.dim, c.entity);
+    }
+  }
+  for (const auto& b : info.extra) ensure(b.dim, b.entity);
+  std::stable_sort(info.entities.begin(), info.entities.end(),
+                   [](const ModelEntity& a, const ModelEntity& b) { return a.dim < b.dim; });
+}
+
+namespace {
+
+// Node tags for every vertex: the original ones where known, fresh ones above the maximum.
+std::vector<std::size_t> node_tags_for(const std::vector<std::size_t>& original, int nv) {
+  std::vector<std::size_t> tags(nv, 0);
+  std::size_t next = 1;
+  for (int i = 0; i < nv && i < static_cast<int>(original.size()); ++i) next = std::max(next, original[i] + 1);
+  std::set<std::size_t> used;
+  for (int i = 0; i < nv; ++i) {
+    if (i < static_cast<int>(original.size()) && original[i] != 0 && used.insert(original[i]).second)
+      tags[i] = original[i];
+    else
+      tags[i] = next++;
+  }
+  return tags;
+}
+
+struct ElementSet {
+  std::vector<std::size_t> tags;  // one per live element
+};
+
+// Fills entities/nodes/elements of the current model. Returns the tags of the main simplices.
+GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
+  GmshWritten w;
+  const ModelInfo& info = data.model();
+  const int dim = data.dim;
+  if (create_entities) {
+    for (const auto& e : info.entities) gmsh::model::addDiscreteEntity(e.dim, e.tag, e.boundary);
+  }
+  // Nodes.
+  const int nv = dim == 3 ? data.tet.nb_vertices() : data.tri.nb_vertices();
+  const auto& vclass = dim == 3 ? data.tet.vclass : data.tri.vclass;
+  const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv);
+  std::map<std::pair<int, int>, std::pair<std::vector<std::size_t>, std::vector<double>>> per_entity;
+  for (int i = 0; i < nv; ++i) {
+    auto& [tags, xyz] = per_entity[{vclass[i].dim, vclass[i].entity}];
+    tags.push_back(ntags[i]);
+    if (dim == 3) {
+      const double* p = data.tet.point(i);
+      xyz.insert(xyz.end(), p, p + 3);
+    } else {
+      const double* p = data.tri.point(i);
+      xyz.insert(xyz.end(), {p[0], p[1], data.tri.z0});
+    }
+  }
+  for (const auto& [key, v] : per_entity) gmsh::model::mesh::addNodes(key.first, key.second, v.first, v.second);
+
+  // Element tags: keep the original ones where they are unique, fresh ones otherwise.
+  std::size_t next = 1;
+  auto bump = [&](const std::vector<std::size_t>& t) {
+    for (std::size_t x : t) next = std::max(next, x + 1);
+  };
+  for (const auto& b : info.extra) bump(b.tags);
+  if (dim == 3) {
+    bump(data.tet.tet_tags);
+    bump(data.tet.tri_tags);
+  } else {
+    bump(data.tri.tri_tags);
+    bump(data.tri.edge_tags);
+  }
+  std::set<std::size_t> used;
+  auto tag_for = [&](const std::vector<std::size_t>& orig, int i) {
+    if (i < static_cast<int>(orig.size()) && orig[i] != 0 && used.insert(orig[i]).second) return orig[i];
+    return next++;
+  };
+  for (const auto& b : info.extra) {
+    std::vector<std::size_t> tg, nd;
+    for (std::size_t e = 0; e < b.tags.size(); ++e) tg.push_back(tag_for(b.tags, static_cast<int>(e)));
+    for (int n : b.nodes) nd.push_back(ntags[n]);
+    gmsh::model::mesh::addElementsByType(b.entity, b.gmsh_type, tg, nd);
+  }
+  auto add_simplices = [&](const std::vector<int>& conn, int npe, const std::vector<int>& entity,
+                           const std::vector<std::size_t>& orig, int type, bool main,
+                           const std::vector<int>* cw) {
+    std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> blocks;
+    const int n = static_cast<int>(conn.size()) / npe;
+    std::vector<std::pair<int, std::size_t>> order;  // (element index, tag) for the main ones
+    for (int e = 0; e < n; ++e) {
+      if (conn[npe * e] < 0) continue;
+      auto& [tg, nd] = blocks[entity[e]];
+      const std::size_t tag = tag_for(orig, e);
+      tg.push_back(tag);
+      const bool flip = cw && std::binary_search(cw->begin(), cw->end(), entity[e]);
+      for (int j = 0; j < npe; ++j) {
+        int jj = j;
+        if (flip && j > 0) jj = npe - j;  // (0,1,2) -> (0,2,1)
+        nd.push_back(ntags[conn[npe * e + jj]]);
+      }
+      if (main) w.element_tags.push_back(tag);
+    }
+    for (const auto& [ent, b] : blocks) gmsh::model::mesh::addElementsByType(ent, type, b.first, b.second);
+  };
+  if (dim == 3) {
+    add_simplices(data.tet.tris, 3, data.tet.tri_surface, data.tet.tri_tags, 2, false, nullptr);
+    add_simplices(data.tet.tets, 4, data.tet.tet_region, data.tet.tet_tags, 4, true, nullptr);
+  } else {
+    add_simplices(data.tri.edges, 2, data.tri.edge_curve, data.tri.edge_tags, 1, false, nullptr);
+    std::vector<int> cw = data.tri.cw_surfaces;
+    std::sort(cw.begin(), cw.end());
+    add_simplices(data.tri.tris, 3, data.tri.tri_region, data.tri.tri_tags, 2, true, &cw);
+  }
+  return w;
+}
+
+}  // namespace
+
+GmshWritten mesh_to_gmsh(const MeshData& data, const std::string& model_name) {
+  GmshWritten w;
+  MeshData copy;
+  const MeshData* d = &data;
+  // Missing entities/classification are synthesized on a copy.
+  bool complete = !data.model().entities.empty();
+  if (complete) {
+    std::set<std::pair<int, int>> have;
+    for (const auto& e : data.model().entities) have.insert({e.dim, e.tag});
+    const auto& vc = data.dim == 3 ? data.tet.vclass : data.tri.vclass;
+    for (const auto& c : vc) complete &= c.entity != 0 && have.count({c.dim, c.entity}) > 0;
+  }
+  if (!complete) {
+    copy = data;
+    complete_model_info(copy);
+    d = &copy;
+  }
+  gmsh_checked("cannot build the Gmsh model", [&] {
+    gmsh::model::add(model_name);
+    w = fill_current_model(*d, true);
+    for (const auto& g : d->model().groups) {
+      gmsh::model::addPhysicalGroup(g.dim, g.entities, g.tag);
+      if (!g.name.empty()) gmsh::model::setPhysicalName(g.dim, g.tag, g.name);
+    }
+  });
+  return w;
+}
+
+GmshWritten replace_gmsh_mesh(const MeshData& data) {
+  GmshWritten w;
+  gmsh_checked("cannot replace the mesh of the current Gmsh model", [&] {
+    gmsh::model::mesh::clear();
+    w = fill_current_model(data, false);
+  });
+  return w;
+}
+
+std::vector<int> add_element_views(const std::vector<ElementField>& fields,
+                                   const std::vector<std::size_t>& element_tags) {
+  std::vector<int> views;
+  gmsh_checked("cannot add quality views", [&] {
+    std::string model;
+    gmsh::model::getCurrent(model);
+    for (const auto& f : fields) {
+      const int v = gmsh::view::add(f.name);
+      std::vector<std::vector<double>> data(f.values.size());
+      for (std::size_t i = 0; i < f.values.size(); ++i) data[i] = {f.values[i]};
+      gmsh::view::addModelData(v, 0, model, "ElementData", element_tags, data);
+      views.push_back(v);
+    }
+  });
+  return views;
+}
+
+}  // namespace cvtmesh

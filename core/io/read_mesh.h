@@ -1,0 +1,28 @@
+// Reads a mesh from a file, by extension: .msh (2.2/4.1) and whatever Gmsh opens (.geo is meshed
+// by Gmsh in the model's dimension; .stl/.step/.brep/...); TetGen .node/.ele and Medit .mesh by
+// our own readers; .off/.obj/.ply through OpenMesh (a closed surface is tetrahedralized by Gmsh).
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/io/mesh_data.h"
+
+namespace cvtmesh {
+
+struct ReadOptions {
+  int dim = -1;                // 2, 3, or -1: the highest dimension present / the model's
+  bool gmsh_optimize = true;   // when Gmsh meshes a model: run its default optimizer (Mesh.Optimize)
+  double mesh_size_factor = 0; // >0: Mesh.MeshSizeFactor for models meshed by Gmsh
+  int seed = 0;                // Mesh.RandomSeed (reproducible meshing)
+  // Numbers set before a .geo is parsed (like gmsh -setnumber NAME VALUE), e.g. {"h", 0.1}.
+  std::vector<std::pair<std::string, double>> set_numbers;
+};
+
+// Throws InputError with a message naming the file and the problem.
+MeshData read_mesh(const std::string& path, const ReadOptions& options = {});
+
+// Lower-case extension with the dot (".msh"), or "" if none.
+std::string file_extension(const std::string& path);
+
+}  // namespace cvtmesh

@@ -1,0 +1,166 @@
+#include "core/mesh/check_mesh.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_set>
+
+#include "core/geometry/predicates.h"
+#include "core/mesh/face_key.h"
+
+namespace cvtmesh {
+namespace {
+
+void problem(MeshCheck& r, const std::string& msg) {
+  r.ok = false;
+  if (r.problems.size() < 40) r.problems.push_back(msg);
+}
+
+}  // namespace
+
+MeshCheck check_mesh(const TetMesh& m) {
+  MeshCheck r;
+  const int nv = m.nb_vertices(), nt = m.nb_tets();
+  if (static_cast<int>(m.tet_region.size()) != nt) problem(r, "tet_region size differs from #T");
+  if (static_cast<int>(m.tri_surface.size()) != m.nb_tris()) problem(r, "tri_surface size differs from #F");
+  if (static_cast<int>(m.vclass.size()) != nv) problem(r, "vclass size differs from #V");
+  if (m.adj.size() != m.tets.size()) {
+    problem(r, "adjacency not built (adj size differs from 4*#T)");
+    return r;
+  }
+  std::unordered_set<FaceKey, FaceKeyHash> constrained;
+  for (int f = 0; f < m.nb_tris(); ++f) {
+    const int* fv = &m.tris[3 * f];
+    for (int k = 0; k < 3; ++k)
+      if (fv[k] < 0 || fv[k] >= nv) {
+        problem(r, "triangle " + std::to_string(f) + " has a vertex id out of range");
+        return r;
+      }
+    constrained.insert(face_key(fv[0], fv[1], fv[2]));
+  }
+  std::unordered_set<FaceKey, FaceKeyHash> seen_faces;
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &m.tets[4 * t];
+    if (tv[0] < 0) continue;
+    bool in_range = true;
+    for (int k = 0; k < 4; ++k)
+      if (tv[k] < 0 || tv[k] >= nv) in_range = false;
+    if (!in_range) {
+      problem(r, "tet " + std::to_string(t) + " has a vertex id out of range");
+      continue;
+    }
+    if (orient3d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])) <= 0) {
+      ++r.nb_inverted;
+      problem(r, "tet " + std::to_string(t) + " is inverted or flat");
+    }
+    for (int f = 0; f < 4; ++f) {
+      const FaceKey key = face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]);
+      seen_faces.insert(key);
+      const int o = m.adj[4 * t + f];
+      if (o < 0) {
+        if (!constrained.count(key)) {
+          ++r.nb_open_faces;
+          problem(r, "boundary face of tet " + std::to_string(t) +
+                         " is not a boundary triangle (boundary not closed)");
+        }
+        continue;
+      }
+      const int t2 = o / 4, f2 = o % 4;
+      if (t2 >= nt || m.tets[4 * t2] < 0 || m.adj[o] != 4 * t + f) {
+        ++r.nb_bad_adjacency;
+        problem(r, "adjacency of tet " + std::to_string(t) + " face " + std::to_string(f) +
+                       " is not symmetric or points to a dead tet");
+        continue;
+      }
+      const int* tv2 = &m.tets[4 * t2];
+      if (face_key(tv2[kTetFace[f2][0]], tv2[kTetFace[f2][1]], tv2[kTetFace[f2][2]]) != key) {
+        ++r.nb_bad_adjacency;
+        problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
+                       " are adjacent but do not share the face");
+      }
+      if (m.tet_region[t] != m.tet_region[t2] && !constrained.count(key)) {
+        ++r.nb_open_faces;
+        problem(r, "interface between regions " + std::to_string(m.tet_region[t]) + " and " +
+                       std::to_string(m.tet_region[t2]) + " is not a constrained triangle");
+      }
+    }
+  }
+  for (const FaceKey& k : constrained)
+    if (!seen_faces.count(k)) {
+      ++r.nb_dangling_constraints;
+      problem(r, "boundary triangle (" + std::to_string(k[0]) + "," + std::to_string(k[1]) + "," +
+                     std::to_string(k[2]) + ") is not a face of any tet");
+    }
+  return r;
+}
+
+MeshCheck check_mesh(const TriMesh2& m) {
+  MeshCheck r;
+  const int nv = m.nb_vertices(), nt = m.nb_tris();
+  if (static_cast<int>(m.tri_region.size()) != nt) problem(r, "tri_region size differs from #T");
+  if (static_cast<int>(m.vclass.size()) != nv) problem(r, "vclass size differs from #V");
+  if (m.adj.size() != m.tris.size()) {
+    problem(r, "adjacency not built (adj size differs from 3*#T)");
+    return r;
+  }
+  std::unordered_set<EdgeKey, EdgeKeyHash> constrained, seen;
+  for (int e = 0; e < m.nb_edges(); ++e) {
+    const int a = m.edges[2 * e], b = m.edges[2 * e + 1];
+    if (a < 0 || a >= nv || b < 0 || b >= nv) {
+      problem(r, "edge " + std::to_string(e) + " has a vertex id out of range");
+      return r;
+    }
+    constrained.insert(edge_key(a, b));
+  }
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &m.tris[3 * t];
+    if (tv[0] < 0) continue;
+    bool in_range = true;
+    for (int k = 0; k < 3; ++k)
+      if (tv[k] < 0 || tv[k] >= nv) in_range = false;
+    if (!in_range) {
+      problem(r, "triangle " + std::to_string(t) + " has a vertex id out of range");
+      continue;
+    }
+    if (orient2d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2])) <= 0) {
+      ++r.nb_inverted;
+      problem(r, "triangle " + std::to_string(t) + " is inverted or flat");
+    }
+    for (int e = 0; e < 3; ++e) {
+      const EdgeKey key = edge_key(tv[(e + 1) % 3], tv[(e + 2) % 3]);
+      seen.insert(key);
+      const int o = m.adj[3 * t + e];
+      if (o < 0) {
+        if (!constrained.count(key)) {
+          ++r.nb_open_faces;
+          problem(r, "boundary edge of triangle " + std::to_string(t) + " is not a boundary edge");
+        }
+        continue;
+      }
+      const int t2 = o / 3, e2 = o % 3;
+      if (t2 >= nt || m.tris[3 * t2] < 0 || m.adj[o] != 3 * t + e) {
+        ++r.nb_bad_adjacency;
+        problem(r, "adjacency of triangle " + std::to_string(t) + " is not symmetric");
+        continue;
+      }
+      const int* tv2 = &m.tris[3 * t2];
+      if (edge_key(tv2[(e2 + 1) % 3], tv2[(e2 + 2) % 3]) != key) {
+        ++r.nb_bad_adjacency;
+        problem(r, "triangles " + std::to_string(t) + " and " + std::to_string(t2) +
+                       " are adjacent but do not share the edge");
+      }
+      if (m.tri_region[t] != m.tri_region[t2] && !constrained.count(key)) {
+        ++r.nb_open_faces;
+        problem(r, "interface between surfaces is not a constrained edge");
+      }
+    }
+  }
+  for (const EdgeKey& k : constrained)
+    if (!seen.count(k)) {
+      ++r.nb_dangling_constraints;
+      problem(r, "boundary edge (" + std::to_string(k[0]) + "," + std::to_string(k[1]) +
+                     ") is not an edge of any triangle");
+    }
+  return r;
+}
+
+}  // namespace cvtmesh

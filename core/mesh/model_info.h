@@ -1,0 +1,41 @@
+// What a Gmsh model carries besides the simplices we optimize: entities with their boundaries,
+// physical groups, lower-dimensional elements (points, lines), original node/element tags.
+// Everything is kept so that .msh -> mesh -> .msh is exact.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace cvtmesh {
+
+struct ModelEntity {
+  int dim = 0;
+  int tag = 0;
+  std::vector<int> boundary;  // signed tags of the (dim-1) entities bounding it (Gmsh convention)
+};
+
+struct PhysicalGroup {
+  int dim = 0;
+  int tag = 0;
+  std::string name;
+  std::vector<int> entities;  // entity tags of dimension dim
+};
+
+// A block of elements kept verbatim (points, lines, or anything not optimized), on one entity.
+struct ElementBlock {
+  int dim = 0;
+  int entity = 0;
+  int gmsh_type = 0;                  // Gmsh element type (15 = point, 1 = line, 2 = tri, 4 = tet)
+  std::vector<std::size_t> tags;      // Gmsh element tags, #E
+  std::vector<int> nodes;             // #E * nodes-per-element, 0-based vertex ids
+};
+
+struct ModelInfo {
+  std::string name;
+  std::string source;                 // path of the file it came from ("" if built in memory)
+  std::vector<ModelEntity> entities;  // all entities, every dimension
+  std::vector<PhysicalGroup> groups;
+  std::vector<ElementBlock> extra;    // elements of dimension < mesh dimension - 1
+};
+
+}  // namespace cvtmesh

@@ -1,0 +1,155 @@
+#include "core/quality/quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/geometry/tet_geometry.h"
+
+namespace cvtmesh {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = 180.0 / kPi;
+
+double sgn(double v) { return v < 0 ? -1.0 : 1.0; }
+
+// Gmsh's ICN for a linear simplex: 1/condition number of the Jacobian of the map from the
+// regular simplex, i.e. d / (||J||_F ||J^-1||_F), signed by det J.
+double tet_icn(const double* a, const double* b, const double* c, const double* d) {
+  // Map from the regular tet R with vertices r0..r3 to (a,b,c,d): J = E * R^-1, E = [b-a c-a d-a].
+  // R^-1 for the regular tet of unit edge (0,0,0),(1,0,0),(1/2,sqrt3/2,0),(1/2,sqrt3/6,sqrt(2/3)).
+  const double s3 = std::sqrt(3.0), s23 = std::sqrt(2.0 / 3.0);
+  const double R[3][3] = {{1, 0.5, 0.5}, {0, s3 / 2, s3 / 6}, {0, 0, s23}};  // columns r1,r2,r3
+  // Inverse of the upper-triangular R.
+  double Ri[3][3] = {{0}};
+  Ri[0][0] = 1 / R[0][0];
+  Ri[1][1] = 1 / R[1][1];
+  Ri[2][2] = 1 / R[2][2];
+  Ri[0][1] = -R[0][1] * Ri[1][1] / R[0][0];
+  Ri[1][2] = -R[1][2] * Ri[2][2] / R[1][1];
+  Ri[0][2] = -(R[0][1] * Ri[1][2] + R[0][2] * Ri[2][2]) / R[0][0];
+  double E[3][3];
+  for (int k = 0; k < 3; ++k) {
+    E[k][0] = b[k] - a[k];
+    E[k][1] = c[k] - a[k];
+    E[k][2] = d[k] - a[k];
+  }
+  double J[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      J[i][j] = 0;
+      for (int k = 0; k < 3; ++k) J[i][j] += E[i][k] * Ri[k][j];
+    }
+  const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                     J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                     J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+  if (det == 0.0) return 0.0;
+  double f2 = 0;
+  for (auto& row : J)
+    for (double v : row) f2 += v * v;
+  // ||J^-1||_F^2 = ||cof(J)||_F^2 / det^2.
+  double c2 = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      const double cof = J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1];
+      c2 += cof * cof;
+    }
+  return 3.0 * std::fabs(det) / std::sqrt(f2 * c2) * sgn(det);
+}
+
+double dist2n(const double* a, const double* b, int dim) {
+  double s = 0;
+  for (int k = 0; k < dim; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
+  return s;
+}
+
+// Signed area: counter-clockwise positive in 2D; always >= 0 in 3D.
+double tri_signed_area(const double* a, const double* b, const double* c, int dim) {
+  return dim == 2 ? tri_area2d(a, b, c) : tri_area3d(a, b, c);
+}
+
+}  // namespace
+
+Measure measure_from_string(const std::string& name) {
+  if (name == "q" || name == "Q") return Measure::kQ;
+  if (name == "radius-ratio" || name == "gamma") return Measure::kRadiusRatio;
+  if (name == "min-angle" || name == "min-dihedral") return Measure::kMinAngle;
+  if (name == "max-angle" || name == "max-dihedral") return Measure::kMaxAngle;
+  if (name == "icn") return Measure::kGmshIcn;
+  throw std::invalid_argument("unknown quality measure '" + name +
+                              "' (expected q, radius-ratio, min-angle, max-angle, icn)");
+}
+
+std::string measure_name(Measure m) {
+  switch (m) {
+    case Measure::kQ: return "q";
+    case Measure::kRadiusRatio: return "radius-ratio";
+    case Measure::kMinAngle: return "min-angle";
+    case Measure::kMaxAngle: return "max-angle";
+    case Measure::kGmshIcn: return "icn";
+  }
+  return "?";
+}
+
+double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m) {
+  const double vol = tet_volume(a, b, c, d);
+  switch (m) {
+    case Measure::kQ: {
+      const double s = tet_sum_sq_edges(a, b, c, d);
+      if (s == 0) return 0;
+      return 72.0 * std::sqrt(3.0) * vol / (s * std::sqrt(s));
+    }
+    case Measure::kRadiusRatio: {
+      const double r = tet_inradius(a, b, c, d);
+      const double R = tet_circumradius(a, b, c, d);
+      if (R == 0 || !std::isfinite(R) || vol == 0) return 0;
+      return 3.0 * r / R * sgn(vol);
+    }
+    case Measure::kMinAngle: {
+      const auto ang = tet_dihedral_angles(a, b, c, d);
+      const double v = *std::min_element(ang.begin(), ang.end()) * kDeg;
+      return vol < 0 ? -v : v;
+    }
+    case Measure::kMaxAngle: {
+      const auto ang = tet_dihedral_angles(a, b, c, d);
+      return *std::max_element(ang.begin(), ang.end()) * kDeg;
+    }
+    case Measure::kGmshIcn: return tet_icn(a, b, c, d);
+  }
+  return 0;
+}
+
+double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m) {
+  const double area = tri_signed_area(a, b, c, dim);
+  switch (m) {
+    case Measure::kQ:
+    case Measure::kGmshIcn: {  // for linear triangles Gmsh's ICN equals the paper's Q
+      const double l2 = dist2n(a, b, dim) + dist2n(b, c, dim) + dist2n(c, a, dim);
+      if (l2 == 0) return 0;
+      return 4.0 * std::sqrt(3.0) * area / l2;
+    }
+    case Measure::kRadiusRatio: {
+      const double la = std::sqrt(dist2n(b, c, dim)), lb = std::sqrt(dist2n(c, a, dim)),
+                   lc = std::sqrt(dist2n(a, b, dim));
+      const double s = 0.5 * (la + lb + lc);
+      if (s == 0 || area == 0) return 0;
+      const double r = std::fabs(area) / s;
+      const double R = la * lb * lc / (4.0 * std::fabs(area));
+      return 2.0 * r / R * sgn(area);
+    }
+    case Measure::kMinAngle: {
+      const auto ang = tri_angles(a, b, c, dim);
+      const double v = *std::min_element(ang.begin(), ang.end()) * kDeg;
+      return area < 0 ? -v : v;
+    }
+    case Measure::kMaxAngle: {
+      const auto ang = tri_angles(a, b, c, dim);
+      return *std::max_element(ang.begin(), ang.end()) * kDeg;
+    }
+  }
+  return 0;
+}
+
+}  // namespace cvtmesh

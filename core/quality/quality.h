@@ -1,0 +1,26 @@
+// Element quality measures: pure functions of the vertex coordinates, selected by one enum
+// (Gmsh qmTetrahedron style). Inverted elements get a negative value for the shape measures,
+// never a silent 0.
+#pragma once
+#include <string>
+
+namespace cvtmesh {
+
+enum class Measure {
+  kQ,             // tet: 72*sqrt(3)*V/(sum L^2)^(3/2); tri: 4*sqrt(3)*A/sum L^2 (the paper's). 1 = regular
+  kRadiusRatio,   // tet: 3r/R; tri: 2r/R. 1 = regular. (Gmsh 4.8's "gamma" for tets.)
+  kMinAngle,      // tet: minimum dihedral angle; tri: minimum angle. Degrees.
+  kMaxAngle,      // tet: maximum dihedral angle; tri: maximum angle. Degrees.
+  kGmshIcn,       // Gmsh's inverse condition number (Plugin(AnalyseMeshQuality) ICNMeasure)
+};
+
+// Parses "q", "radius-ratio", "min-angle", "max-angle", "icn"; throws std::invalid_argument.
+Measure measure_from_string(const std::string& name);
+std::string measure_name(Measure m);
+
+// Tetrahedron a,b,c,d (each 3 doubles). Positive orientation = positive volume.
+double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m);
+// Triangle a,b,c; dim = 2 (x,y; counter-clockwise positive) or 3 (x,y,z; always >= 0).
+double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m);
+
+}  // namespace cvtmesh

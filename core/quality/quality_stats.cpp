@@ -1,0 +1,81 @@
+#include "core/quality/quality_stats.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace cvtmesh {
+
+std::vector<double> element_qualities(const TetMesh& mesh, Measure m) {
+  std::vector<double> q;
+  q.reserve(mesh.nb_tets());
+  for (int t = 0; t < mesh.nb_tets(); ++t) {
+    const int* v = &mesh.tets[4 * t];
+    if (v[0] < 0) continue;
+    q.push_back(tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                            mesh.point(v[3]), m));
+  }
+  return q;
+}
+
+std::vector<double> element_qualities(const TriMesh2& mesh, Measure m) {
+  std::vector<double> q;
+  q.reserve(mesh.nb_tris());
+  for (int t = 0; t < mesh.nb_tris(); ++t) {
+    const int* v = &mesh.tris[3 * t];
+    if (v[0] < 0) continue;
+    q.push_back(tri_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), 2, m));
+  }
+  return q;
+}
+
+QualityStats quality_stats_from_values(const std::vector<double>& q, const std::vector<double>& rr,
+                                       const std::vector<double>& min_angle,
+                                       const std::vector<double>& max_angle, int dim,
+                                       const std::string& label) {
+  QualityStats s;
+  s.label = label;
+  s.dim = dim;
+  s.nb_elements = static_cast<long>(q.size());
+  if (q.empty()) return s;
+  double sum = 0, sum_rr = 0;
+  long bad = 0, good = 0;
+  s.q_min = std::numeric_limits<double>::infinity();
+  s.q_max = -std::numeric_limits<double>::infinity();
+  for (double v : q) {
+    sum += v;
+    s.q_min = std::min(s.q_min, v);
+    s.q_max = std::max(s.q_max, v);
+    if (v > 0.7) ++s.bin[0];
+    else if (v > 0.5) ++s.bin[1];
+    else if (v > 0.3) ++s.bin[2];
+    else if (v > 0) ++s.bin[3];
+    else ++s.nb_inverted;
+    if (v < 0.3) ++bad;
+    if (v > 0.5) ++good;
+  }
+  for (double v : rr) sum_rr += v;
+  const double n = static_cast<double>(q.size());
+  s.q_avg = sum / n;
+  s.avg_radius_ratio = rr.empty() ? 0 : sum_rr / static_cast<double>(rr.size());
+  s.bad_pct = 100.0 * static_cast<double>(bad) / n;
+  s.good_pct = 100.0 * static_cast<double>(good) / n;
+  s.min_angle = min_angle.empty() ? 0 : *std::min_element(min_angle.begin(), min_angle.end());
+  s.max_angle = max_angle.empty() ? 0 : *std::max_element(max_angle.begin(), max_angle.end());
+  return s;
+}
+
+QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
+  return quality_stats_from_values(
+      element_qualities(mesh, Measure::kQ), element_qualities(mesh, Measure::kRadiusRatio),
+      element_qualities(mesh, Measure::kMinAngle), element_qualities(mesh, Measure::kMaxAngle), 3,
+      label);
+}
+
+QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {
+  return quality_stats_from_values(
+      element_qualities(mesh, Measure::kQ), element_qualities(mesh, Measure::kRadiusRatio),
+      element_qualities(mesh, Measure::kMinAngle), element_qualities(mesh, Measure::kMaxAngle), 2,
+      label);
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,42 @@
+// Per-mesh quality statistics: the columns of the paper's Tables 1-7.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/mesh/tet_mesh.h"
+#include "core/mesh/tri_mesh2.h"
+#include "core/quality/quality.h"
+
+namespace cvtmesh {
+
+struct QualityStats {
+  std::string label;
+  int dim = 3;
+  long nb_elements = 0;
+  // Counts by the primary measure Q: 0.7<Q<=1, 0.5<Q<=0.7, 0.3<Q<=0.5, 0<Q<=0.3; and Q<=0.
+  long bin[4] = {0, 0, 0, 0};
+  long nb_inverted = 0;
+  double q_min = 0, q_max = 0, q_avg = 0;
+  double bad_pct = 0;   // Q < 0.3, percent of all elements
+  double good_pct = 0;  // Q > 0.5, percent of all elements
+  double min_angle = 0; // degrees: dihedral (3D) or planar (2D)
+  double max_angle = 0;
+  double avg_radius_ratio = 0;
+  // Extra rows (e.g. {"iterations", 42}, {"seconds", 1.3}), shown in insertion order.
+  std::vector<std::pair<std::string, double>> extra;
+};
+
+// Per-element values of the primary measure Q (one per live element, in element order).
+std::vector<double> element_qualities(const TetMesh& mesh, Measure m);
+std::vector<double> element_qualities(const TriMesh2& mesh, Measure m);
+
+QualityStats quality_stats(const TetMesh& mesh, const std::string& label);
+QualityStats quality_stats(const TriMesh2& mesh, const std::string& label);
+// Statistics from precomputed per-element values (Q, radius ratio, min angle, max angle).
+QualityStats quality_stats_from_values(const std::vector<double>& q, const std::vector<double>& rr,
+                                       const std::vector<double>& min_angle,
+                                       const std::vector<double>& max_angle, int dim,
+                                       const std::string& label);
+
+}  // namespace cvtmesh

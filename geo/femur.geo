@@ -1,0 +1,22 @@
+// The femur of the paper's second 3D example (Du & Wang, Figs. 10-11 / Table 7).
+// Surface: a right femur segmented from the Visible Human Project female CT (BMFToolkit,
+// zlib licence); see ../shared/data/PROVENANCE.md. The data stays outside this repository:
+// pass its path with  -setstring stl /path/to/femur_bmf_vhp_female_R.stl  (gmsh) or
+// --set-string stl=... ; the default is the project's sibling shared/ folder.
+// The segmentation surface (min angle 5 deg) is remeshed: it is classified into patches by
+// the feature angle, re-parametrized (CreateGeometry) and meshed with size h (metres).
+stl = DefineString[StrCat(CurrentDir, "/../../shared/data/femur_bmf_vhp_female_R.stl"), Name "cvtmesh/Geometry/femur STL"];
+DefineConstant[
+  h = {0.0048, Name "cvtmesh/Geometry/h (m)"},
+  angle = {40, Name "cvtmesh/Geometry/feature angle (deg)"}
+];
+Merge StrCat(stl);
+ClassifySurfaces{angle * Pi / 180, 1, 1, Pi};
+CreateGeometry;
+Surface Loop(1) = Surface{:};
+Volume(1) = {1};
+Physical Surface("bone_surface", 1) = Surface{:};
+Physical Volume("bone", 2) = {1};
+Mesh.MeshSizeMin = 0;
+Mesh.MeshSizeMax = h;
+Mesh.MeshSizeFromCurvature = 0;

@@ -1,0 +1,137 @@
+#include "core/quality/quality.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/quality/quality_stats.h"
+#include "core/quality/quality_table.h"
+
+namespace cvtmesh {
+namespace {
+
+const double kRegular[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+
+TEST(TetQuality, RegularTetIsOneForEveryShapeMeasure) {
+  // kRegular as listed is negatively oriented (Q = -1); swapping two vertices makes it positive.
+  EXPECT_NEAR(tet_quality(kRegular[0], kRegular[1], kRegular[2], kRegular[3], Measure::kQ), -1.0, 1e-12);
+  EXPECT_NEAR(tet_quality(kRegular[1], kRegular[0], kRegular[2], kRegular[3], Measure::kQ), 1.0, 1e-12);
+  const double a[3] = {1, 1, 1}, b[3] = {-1, 1, -1}, c[3] = {1, -1, -1}, d[3] = {-1, -1, 1};
+  const double s = tet_quality(a, b, c, d, Measure::kQ);
+  EXPECT_NEAR(std::fabs(s), 1.0, 1e-12);
+  const double sign = s > 0 ? 1 : -1;
+  const double* pa = sign > 0 ? a : b;
+  const double* pb = sign > 0 ? b : a;
+  EXPECT_NEAR(tet_quality(pa, pb, c, d, Measure::kQ), 1.0, 1e-12);
+  EXPECT_NEAR(tet_quality(pa, pb, c, d, Measure::kRadiusRatio), 1.0, 1e-12);
+  EXPECT_NEAR(tet_quality(pa, pb, c, d, Measure::kGmshIcn), 1.0, 1e-12);
+  EXPECT_NEAR(tet_quality(pa, pb, c, d, Measure::kMinAngle), std::acos(1.0 / 3) * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(tet_quality(pa, pb, c, d, Measure::kMaxAngle), std::acos(1.0 / 3) * 180 / M_PI, 1e-9);
+}
+
+TEST(TetQuality, BccTetIsAbout0_9295) {
+  // The BCC lattice tet: two opposite edges of length 2 (cube edges) and four of length sqrt(3).
+  const double a[3] = {0, 0, 0}, b[3] = {2, 0, 0}, c[3] = {1, 1, 1}, d[3] = {1, 1, -1};
+  double v = tet_quality(a, b, c, d, Measure::kQ);
+  if (v < 0) v = tet_quality(b, a, c, d, Measure::kQ);
+  // 72*sqrt3*V/(sum L^2)^1.5 with V = 2/3, sum L^2 = 2*4 + 4*3 = 20.
+  EXPECT_NEAR(v, 72 * std::sqrt(3.0) * (2.0 / 3) / std::pow(20.0, 1.5), 1e-12);
+  EXPECT_NEAR(v, 0.9295, 5e-5);
+}
+
+TEST(TetQuality, FlatTetIsZeroAndInvertedIsNegative) {
+  const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0.3, 0.3, 0};
+  EXPECT_EQ(tet_quality(a, b, c, d, Measure::kQ), 0.0);
+  EXPECT_EQ(tet_quality(a, b, c, d, Measure::kRadiusRatio), 0.0);
+  const double e[3] = {0, 0, 1};
+  const double pos = tet_quality(a, b, c, e, Measure::kQ);
+  const double neg = tet_quality(b, a, c, e, Measure::kQ);
+  EXPECT_GT(pos, 0);
+  EXPECT_DOUBLE_EQ(neg, -pos);
+  EXPECT_LT(tet_quality(b, a, c, e, Measure::kRadiusRatio), 0);
+  EXPECT_LT(tet_quality(b, a, c, e, Measure::kGmshIcn), 0);
+  EXPECT_LT(tet_quality(b, a, c, e, Measure::kMinAngle), 0);
+}
+
+TEST(TetQuality, CornerTetDihedralAngles) {
+  // The corner tet of the unit cube: three right dihedral angles at the axes, three of
+  // acos(1/sqrt3) = 54.7356 deg at the slanted face.
+  const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0, 0, 1};
+  EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kMaxAngle), 90.0, 1e-9);
+  EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kMinAngle), std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
+  // Q = 72 sqrt3 (1/6) / (3 + 3*2)^1.5
+  EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kQ), 12 * std::sqrt(3.0) / 27.0, 1e-12);
+}
+
+TEST(TriQuality, EquilateralIsOneAndKnownAngles) {
+  const double a[2] = {0, 0}, b[2] = {1, 0}, c[2] = {0.5, std::sqrt(3.0) / 2};
+  EXPECT_NEAR(tri_quality(a, b, c, 2, Measure::kQ), 1.0, 1e-12);
+  EXPECT_NEAR(tri_quality(a, b, c, 2, Measure::kRadiusRatio), 1.0, 1e-12);
+  EXPECT_NEAR(tri_quality(a, b, c, 2, Measure::kMinAngle), 60.0, 1e-9);
+  EXPECT_NEAR(tri_quality(a, c, b, 2, Measure::kQ), -1.0, 1e-12);
+  // Right isosceles: angles 45, 45, 90; Q = 4 sqrt3 * 0.5 / (1 + 1 + 2).
+  const double d[2] = {0, 1};
+  EXPECT_NEAR(tri_quality(a, b, d, 2, Measure::kMinAngle), 45.0, 1e-9);
+  EXPECT_NEAR(tri_quality(a, b, d, 2, Measure::kMaxAngle), 90.0, 1e-9);
+  EXPECT_NEAR(tri_quality(a, b, d, 2, Measure::kQ), std::sqrt(3.0) / 2, 1e-12);
+  // The 30-60-90 triangle.
+  const double e[2] = {std::sqrt(3.0), 0}, f[2] = {0, 1};
+  EXPECT_NEAR(tri_quality(a, e, f, 2, Measure::kMinAngle), 30.0, 1e-9);
+  EXPECT_NEAR(tri_quality(a, e, f, 2, Measure::kMaxAngle), 90.0, 1e-9);
+  // The same triangle in 3D coordinates.
+  const double a3[3] = {0, 0, 5}, b3[3] = {1, 0, 5}, c3[3] = {0.5, std::sqrt(3.0) / 2, 5};
+  EXPECT_NEAR(tri_quality(a3, b3, c3, 3, Measure::kQ), 1.0, 1e-12);
+}
+
+TEST(QualityStats, BinsAndPercentagesOnAHandMadeSet) {
+  // Values on and around each bin boundary: the paper's bins are half-open, (lo, hi].
+  const std::vector<double> qv = {1.0, 0.71, 0.7, 0.5, 0.51, 0.3, 0.31, 0.29, 0.01, -0.2};
+  const auto s = quality_stats_from_values(qv, qv, {10, 20}, {100, 170}, 3, "set");
+  EXPECT_EQ(s.nb_elements, 10);
+  EXPECT_EQ(s.bin[0], 2);  // 1.0, 0.71
+  EXPECT_EQ(s.bin[1], 2);  // 0.7, 0.51
+  EXPECT_EQ(s.bin[2], 2);  // 0.5, 0.31
+  EXPECT_EQ(s.bin[3], 3);  // 0.3, 0.29, 0.01
+  EXPECT_EQ(s.nb_inverted, 1);
+  EXPECT_DOUBLE_EQ(s.q_min, -0.2);
+  // bad: Q < 0.3 -> 0.29, 0.01, -0.2 ; good: Q > 0.5 -> 1.0, 0.71, 0.7, 0.51
+  EXPECT_DOUBLE_EQ(s.bad_pct, 30.0);
+  EXPECT_DOUBLE_EQ(s.good_pct, 40.0);
+  EXPECT_DOUBLE_EQ(s.min_angle, 10);
+  EXPECT_DOUBLE_EQ(s.max_angle, 170);
+  double sum = 0;
+  for (double v : qv) sum += v;
+  EXPECT_DOUBLE_EQ(s.q_avg, sum / 10);
+}
+
+TEST(QualityTable, HasThePaperRowsInTextMarkdownAndJson) {
+  const std::vector<double> qv = {0.9, 0.6, 0.4, 0.2};
+  QualityTable t;
+  t.columns.push_back(quality_stats_from_values(qv, qv, {20}, {120}, 3, "Init"));
+  auto opt = quality_stats_from_values({0.95, 0.9}, {0.9, 0.9}, {40}, {100}, 3, "CVDT+SWAP");
+  opt.extra.push_back({"iterations", 12});
+  t.columns.push_back(opt);
+  const std::string text = t.to_text();
+  for (const char* row : {"number of elements", "0.7 < Q <= 1.0", "0.5 < Q <= 0.7", "0.3 < Q <= 0.5",
+                          "0.0 < Q <= 0.3", "Q_min", "bad elements (%)", "good elements (%)",
+                          "average quality", "min dihedral angle", "max dihedral angle", "iterations"})
+    EXPECT_NE(text.find(row), std::string::npos) << row;
+  EXPECT_NE(text.find("CVDT+SWAP"), std::string::npos);
+  EXPECT_EQ(text.find("inverted"), std::string::npos);  // no inverted element: no such row
+  const std::string md = t.to_markdown();
+  EXPECT_NE(md.find("| Init | CVDT+SWAP |"), std::string::npos);
+  EXPECT_NE(md.find("| bad elements (%) | 25.00 | 0.00 |"), std::string::npos);
+  const std::string js = t.to_json();
+  EXPECT_NE(js.find("\"average_quality\""), std::string::npos);
+  EXPECT_NE(js.find("\"iterations\": 12"), std::string::npos);
+  // 2D tables carry the rows of Tables 1-5.
+  QualityTable t2;
+  t2.columns.push_back(quality_stats_from_values(qv, qv, {20}, {120}, 2, "RandPert"));
+  const std::string text2 = t2.to_text();
+  for (const char* row : {"average quality", "minimum quality", "minimum angle", "maximum angle"})
+    EXPECT_NE(text2.find(row), std::string::npos) << row;
+  EXPECT_EQ(text2.find("0.7 < Q"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cvtmesh
