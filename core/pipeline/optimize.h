@@ -1,0 +1,49 @@
+// The named methods users pick: cvdt, cvdt+swap, combined, swap (3D); cvdt, dl, wdl (2D).
+// One entry point for the CLI, the GUI panel and the scripting front ends.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/io/mesh_data.h"
+#include "core/quality/quality_stats.h"
+
+namespace cvtmesh {
+
+struct OptimizeProgress {
+  std::string phase;      // "lloyd", "swap", "smooth", "combined", ...
+  int iteration = 0;
+  double D = 0;           // Lloyd displacement (normalised), 0 if not applicable
+  double energy = 0;      // CVT energy, 0 if not applicable
+  double q_min = 0, q_avg = 0;
+};
+
+struct OptimizeOptions {
+  std::string method = "cvdt+swap";
+  int max_iterations = 100;   // Lloyd / outer iterations
+  double tolerance = 1e-5;    // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
+  // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
+  // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
+  std::string sizing = "mesh";
+  std::function<double(const double* x)> size_function;  // x has d coordinates
+  unsigned seed = 0;
+  bool verify = true;          // run the invariant checks at the end (throws InvariantError)
+  std::function<void(const OptimizeProgress&)> progress;
+};
+
+struct OptimizeResult {
+  QualityStats before, after;
+  int iterations = 0;
+  bool converged = false;
+  double seconds = 0;
+};
+
+// Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces
+// kept exactly). Throws std::invalid_argument for an unknown method or one that does not apply
+// to the mesh's dimension, InputError for a mesh it cannot handle, InvariantError on a bug.
+OptimizeResult optimize(MeshData& data, const OptimizeOptions& options);
+
+// The methods available for a dimension (2 or 3), in menu order.
+std::vector<std::string> methods_for_dim(int dim);
+
+}  // namespace cvtmesh
