@@ -1,0 +1,51 @@
+// Shared pieces of the CLI subcommands: input/output option groups, the command registry.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/io/read_mesh.h"
+#include "core/io/write_mesh.h"
+#include "core/quality/quality_table.h"
+
+namespace cvtmesh::cli {
+
+// A registered subcommand: its CLI11 app and what runs when it is selected (returns exit code).
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+std::vector<Command>& commands();
+
+// Options of the subcommands that read a mesh.
+struct InputOpts {
+  std::string path;
+  int dim = -1;
+  std::vector<std::string> set_numbers;
+  double size_factor = 0;
+  ReadOptions to_read_options() const;
+};
+void add_input(CLI::App* c, InputOpts& in);
+
+// Options of the subcommands that write a mesh.
+struct OutputOpts {
+  std::string path;
+  bool quality = false;
+  double msh_version = 4.1;
+  bool binary = false;
+  bool no_clobber = false;
+  bool in_place = false;
+  WriteOptions to_write_options(const MeshData& d, const std::string& input) const;
+};
+void add_output_flags(CLI::App* c, OutputOpts& o);
+
+// Renders a table as "text", "markdown" or "json".
+std::string render(const QualityTable& t, const std::string& format);
+
+// One register function per subcommand (convert/cmd_<name>.cpp).
+void register_stats(CLI::App& app);
+void register_convert(CLI::App& app);
+
+}  // namespace cvtmesh::cli
