@@ -24,6 +24,7 @@ struct InputOpts {
   std::string path;
   int dim = -1;
   std::vector<std::string> set_numbers;
+  std::vector<std::string> set_strings;
   double size_factor = 0;
   ReadOptions to_read_options() const;
 };
