@@ -102,8 +102,23 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
     Polytope& p = ws.poly;
     tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), p);
     bool alive = true;
-    for (std::size_t k = 0; k < normals.size() && alive; ++k)
+    const Vec3 q[4] = {vec3(m.point(tv[0])), vec3(m.point(tv[1])), vec3(m.point(tv[2])), vec3(m.point(tv[3]))};
+    for (std::size_t k = 0; k < normals.size() && alive; ++k) {
+      // A plane that keeps the whole tet cannot cut the piece: skip it; one that keeps none of
+      // it empties the piece.
+      int in = 0, out = 0;
+      for (const Vec3& x : q) {
+        const double sd = dot(normals[k], x) - offsets[k];
+        in += sd <= 0;
+        out += sd > 0;
+      }
+      if (out == 0) continue;
+      if (in == 0) {
+        alive = false;
+        break;
+      }
       alive = clip_polytope(p, normals[k], offsets[k], 4, eps, ws.scratch);
+    }
     if (!alive) continue;
     const Moments mt = polytope_moments(p, z);
     if (mt.m0 <= 0) continue;
