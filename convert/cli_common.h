@@ -51,5 +51,6 @@ void register_convert(CLI::App& app);
 void register_optimize(CLI::App& app);
 void register_mesh(CLI::App& app);
 void register_compare(CLI::App& app);
+void register_check(CLI::App& app);
 
 }  // namespace cvtmesh::cli

@@ -66,7 +66,9 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   std::string wrapper_dir, wrapper;
   if (ext == ".geo" && (!options.set_numbers.empty() || !options.set_strings.empty())) {
     char tmpl[] = "/tmp/cvtmesh-geo-XXXXXX";
-    if (!mkdtemp(tmpl)) throw InputError("cannot create a temporary directory to set the parameters of '" + path + "'");
+    if (!mkdtemp(tmpl))
+      throw InputError("cannot create a temporary directory to set the parameters of '" + path +
+                       "'");
     wrapper_dir = tmpl;
     wrapper = wrapper_dir + "/" + std::filesystem::path(path).filename().string();
     std::ofstream w(wrapper);
