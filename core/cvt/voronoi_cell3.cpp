@@ -102,7 +102,8 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
     Polytope& p = ws.poly;
     tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), p);
     bool alive = true;
-    const Vec3 q[4] = {vec3(m.point(tv[0])), vec3(m.point(tv[1])), vec3(m.point(tv[2])), vec3(m.point(tv[3]))};
+    const Vec3 q[4] = {vec3(m.point(tv[0])), vec3(m.point(tv[1])), vec3(m.point(tv[2])),
+                       vec3(m.point(tv[3]))};
     for (std::size_t k = 0; k < normals.size() && alive; ++k) {
       // A plane that keeps the whole tet cannot cut the piece: skip it; one that keeps none of
       // it empties the piece.

@@ -30,7 +30,7 @@ std::shared_ptr<const SizingField3> sizing3(const TetMesh& mesh, const OptimizeO
 }
 
 void report(const OptimizeOptions& o, const std::string& phase, int it, double D, double energy,
-            const QualityStats& s) {
+            const QualityStats& s, bool restarted = false) {
   if (!o.progress) return;
   OptimizeProgress p;
   p.phase = phase;
@@ -39,6 +39,7 @@ void report(const OptimizeOptions& o, const std::string& phase, int it, double D
   p.energy = energy;
   p.q_min = s.q_min;
   p.q_avg = s.q_avg;
+  p.restarted = restarted;
   o.progress(p);
 }
 
@@ -48,9 +49,11 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.lloyd.max_iterations = o.max_iterations;
   lo.lloyd.tolerance = o.tolerance;
   lo.relaxation = o.relaxation;
+  lo.anderson_depth = o.anderson_depth;
   lo.sizing = sizing3(mesh, o);
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
-    if (o.progress) report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""));
+    if (o.progress)
+      report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""), s.restarted);
   });
   r.iterations = lr.iterations;
   r.converged = lr.converged;
