@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
 #include "tests/swap/swap_test_util.h"
 
 namespace cvtmesh {
@@ -50,6 +51,7 @@ TEST(CombinedOptimize, RaisesAverageAndMinimumQualityOfTheUnoptimizedCubeSphere)
     if (m.vclass[v].dim < 3)
       for (int k = 0; k < 3; ++k) ASSERT_EQ(m.point(v)[k], start.point(v)[k]) << "vertex " << v;
   EXPECT_NEAR(total_volume(m), vol, 1e-12 * vol);
+  EXPECT_NO_THROW(verify_optimized(start, m));  // the pipeline's own end-of-run invariants
 }
 
 TEST(CombinedOptimize, ZeroIterationsLeavesTheMeshAloneAndBadOptionsThrow) {

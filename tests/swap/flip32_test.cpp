@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "core/mesh/check_mesh.h"
+#include "core/swap/apply_swap.h"
 #include "core/swap/compact_tets.h"
+#include "core/swap/flip23.h"
 #include "tests/swap/swap_test_util.h"
 
 namespace cvtmesh {
@@ -51,6 +53,40 @@ TEST(Flip32, RefusesOtherRingSizesBoundaryEdgesAndNonConvexRings) {
   EXPECT_EQ(flip32(high, 0, local_edge(high, 0, 0, 1)).status, SwapStatus::kNotConvex);
   EXPECT_EQ(tet_vertex_sets(high), before);
   EXPECT_TRUE(check_mesh(high).ok);
+}
+
+TEST(ApplySwap, ReusesFreeSlotsAndKeepsRegionsAndTagsInStep) {
+  TetMesh m = ring_mesh(3);
+  m.tet_tags = {11, 12, 13};
+  const ConstrainedFaces cf = constrained_faces(m);
+  std::vector<int> free_slots;
+  SwapPlan down = plan_flip32(m, cf, 0, local_edge(m, 0, 0, 1));
+  ASSERT_EQ(down.status, SwapStatus::kOk);
+  apply_swap(m, down, &free_slots);
+  ASSERT_EQ(free_slots.size(), 1u);
+  const int dead = free_slots[0];
+  EXPECT_LT(m.tets[4 * dead], 0);
+  EXPECT_TRUE(check_mesh(m).ok);
+  for (int id : down.new_ids) EXPECT_EQ(m.tet_tags[id], 0u);  // new tets have no Gmsh tag
+  // The 2-3 flip back needs a third slot: it takes the dead one instead of appending.
+  const int t = down.new_ids[0];
+  const int f = testing::face_opposite(m, t, testing::face_opposite(m, t, 0) >= 0 ? 0 : 1);
+  SwapPlan up = plan_flip23(m, cf, t, f);
+  ASSERT_EQ(up.status, SwapStatus::kOk);
+  apply_swap(m, up, &free_slots);
+  EXPECT_TRUE(free_slots.empty());
+  EXPECT_EQ(m.nb_tets(), 3);
+  EXPECT_NE(std::find(up.new_ids.begin(), up.new_ids.end(), dead), up.new_ids.end());
+  EXPECT_EQ(m.tet_tags.size(), 3u);
+  EXPECT_EQ(m.tet_region, std::vector<int>(3, 1));
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems[0]);
+  // An invalid plan (the edge (p, r0) is on the boundary) is never applied.
+  int tb = 0;
+  while (local_edge(m, tb, 0, 2) < 0) ++tb;
+  SwapPlan bad = plan_flip32(m, cf, tb, local_edge(m, tb, 0, 2));
+  EXPECT_EQ(bad.status, SwapStatus::kBoundary);
+  EXPECT_THROW(apply_swap(m, bad), std::invalid_argument);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "tests/swap/swap_test_util.h"
 
@@ -30,6 +31,7 @@ std::string first_problem(const MeshCheck& c) {
 // The invariants of a swap pass on the unoptimized cube minus a ball, for one criterion.
 void check_swap_invariants(Measure measure) {
   TetMesh m = unoptimized_cube_sphere();
+  const TetMesh start = m;
   const MeshCheck c0 = check_mesh(m);
   ASSERT_TRUE(c0.ok) << first_problem(c0);
   const auto tris_before = constrained_triples(m);
@@ -55,6 +57,7 @@ void check_swap_invariants(Measure measure) {
   EXPECT_EQ(boundary_faces(m), outer_before);
   EXPECT_EQ(m.xyz, xyz_before);  // a swap never moves a vertex
   EXPECT_NEAR(total_volume(m), vol, 1e-12 * vol);
+  EXPECT_NO_THROW(verify_optimized(start, m));  // the pipeline's own end-of-run invariants
   // The Delaunay Init has slivers whose interior edges can be removed: work was done, and the
   // counts add up to the change in the number of tets (2-3: +1, edge removal n: n-4).
   EXPECT_GT(s.nb_flip32 + s.nb_edge_removals, 0);
