@@ -80,9 +80,10 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
   const std::vector<int> nbrs = vertex_neighbors(m, star, v);
   const Vec3 z = vec3(m.point(v));
   // Bisector half-spaces (x - mid).(w - z) <= 0.
-  std::vector<Vec3> normals;
-  std::vector<double> offsets;
-  normals.reserve(nbrs.size());
+  std::vector<Vec3>& normals = ws.normals;
+  std::vector<double>& offsets = ws.offsets;
+  normals.clear();
+  offsets.clear();
   for (int w : nbrs) {
     const Vec3 pw = vec3(m.point(w));
     const Vec3 n = pw - z;
@@ -98,10 +99,26 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
   for (std::size_t qi = 0; qi < ws.queue.size(); ++qi) {
     const int t = ws.queue[qi];
     const int* tv = &m.tets[4 * t];
-    Polytope p = tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
+    Polytope& p = ws.poly;
+    tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), p);
     bool alive = true;
-    for (std::size_t k = 0; k < normals.size() && alive; ++k)
-      alive = clip_polytope(p, normals[k], offsets[k], 4, eps);
+    const Vec3 q[4] = {vec3(m.point(tv[0])), vec3(m.point(tv[1])), vec3(m.point(tv[2])), vec3(m.point(tv[3]))};
+    for (std::size_t k = 0; k < normals.size() && alive; ++k) {
+      // A plane that keeps the whole tet cannot cut the piece: skip it; one that keeps none of
+      // it empties the piece.
+      int in = 0, out = 0;
+      for (const Vec3& x : q) {
+        const double sd = dot(normals[k], x) - offsets[k];
+        in += sd <= 0;
+        out += sd > 0;
+      }
+      if (out == 0) continue;
+      if (in == 0) {
+        alive = false;
+        break;
+      }
+      alive = clip_polytope(p, normals[k], offsets[k], 4, eps, ws.scratch);
+    }
     if (!alive) continue;
     const Moments mt = polytope_moments(p, z);
     if (mt.m0 <= 0) continue;

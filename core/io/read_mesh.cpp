@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
@@ -59,10 +61,35 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   MeshData data;
   std::string previous;
   gmsh::model::getCurrent(previous);
+  // Parameters of a .geo are defined before it is parsed (its DefineConstant[] then keeps them),
+  // like gmsh -setnumber: through a temporary wrapper that sets them and Includes the model.
+  std::string wrapper_dir, wrapper;
+  if (ext == ".geo" && (!options.set_numbers.empty() || !options.set_strings.empty())) {
+    char tmpl[] = "/tmp/cvtmesh-geo-XXXXXX";
+    if (!mkdtemp(tmpl))
+      throw InputError("cannot create a temporary directory to set the parameters of '" + path +
+                       "'");
+    wrapper_dir = tmpl;
+    wrapper = wrapper_dir + "/" + std::filesystem::path(path).filename().string();
+    std::ofstream w(wrapper);
+    for (const auto& [name, value] : options.set_numbers) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      w << name << " = " << buf << ";\n";
+    }
+    for (const auto& [name, value] : options.set_strings) w << name << " = \"" << value << "\";\n";
+    w << "Include \"" << std::filesystem::absolute(path).string() << "\";\n";
+  }
+  struct RemoveWrapper {
+    std::string dir, file;
+    ~RemoveWrapper() {
+      if (!file.empty()) std::remove(file.c_str());
+      if (!dir.empty()) rmdir(dir.c_str());
+    }
+  } remove_wrapper{wrapper_dir, wrapper};
   gmsh_checked("cannot read '" + path + "'", [&] {
-    for (const auto& [name, value] : options.set_numbers) gmsh::onelab::setNumber(name, {value});
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::open(path);
+    gmsh::open(wrapper.empty() ? path : wrapper);
   });
   gmsh_checked("cannot mesh '" + path + "'", [&] {
     if (!options.gmsh_optimize) {

@@ -17,6 +17,8 @@ struct ReadOptions {
   int seed = 0;                 // Mesh.RandomSeed (reproducible meshing)
   // Numbers set before a .geo is parsed (like gmsh -setnumber NAME VALUE), e.g. {"h", 0.1}.
   std::vector<std::pair<std::string, double>> set_numbers;
+  // Strings set the same way (like gmsh -setstring NAME VALUE), e.g. {"stl", "/data/femur.stl"}.
+  std::vector<std::pair<std::string, std::string>> set_strings;
 };
 
 // Throws InputError with a message naming the file and the problem.
