@@ -1,4 +1,5 @@
-// cvtmesh optimize IN -o OUT --method cvdt+swap|cvdt|combined|swap (3D), cvdt|dl|wdl (2D).
+// cvtmesh optimize IN -o OUT --method cvdt+swap+smooth|cvdt+swap|cvdt|combined|swap (3D),
+// cvdt|dl|wdl (2D).
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -9,8 +10,9 @@
 namespace cvtmesh::cli {
 
 void add_method_options(CLI::App* c, OptimizeOptions& o) {
-  c->add_option("--method,-m", o.method,
-                "cvdt+swap (default), cvdt, combined, swap (3D); cvdt, dl, wdl (2D)");
+  c->add_option(
+      "--method,-m", o.method,
+      "cvdt+swap+smooth (default), cvdt+swap, cvdt, combined, swap (3D); cvdt, dl, wdl (2D)");
   c->add_option("--max-iterations", o.max_iterations, "maximum Lloyd / outer iterations")
       ->check(CLI::NonNegativeNumber);
   c->add_option("--tolerance", o.tolerance, "stop when the mean squared move / h^2 is below this")

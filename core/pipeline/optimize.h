@@ -1,4 +1,6 @@
-// The named methods users pick: cvdt, cvdt+swap, combined, swap (3D); cvdt, dl, wdl (2D).
+// The named methods users pick. 3D: cvdt (Lloyd CVDT), cvdt+swap (the paper's CVDT+SWAP),
+// cvdt+swap+smooth (CVDT+SWAP then the guarded smoothing + dihedral flips polish), combined (the
+// classical CombOpt), swap (flips only). 2D: cvdt, dl, wdl.
 // One entry point for the CLI, the GUI panel and the scripting front ends.
 #pragma once
 #include <functional>
@@ -20,7 +22,7 @@ struct OptimizeProgress {
 };
 
 struct OptimizeOptions {
-  std::string method = "cvdt+swap";
+  std::string method = "cvdt+swap+smooth";
   int max_iterations = 100;  // Lloyd / outer iterations
   double tolerance = 1e-5;   // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
   double relaxation = 1.5;   // Lloyd over-relaxation omega in (0, 2); 1 = the paper's plain step
