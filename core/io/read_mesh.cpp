@@ -6,11 +6,17 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
+#include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/gmsh_surface.h"
+#include "core/io/surface_io.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -28,21 +34,87 @@ void check_readable(const std::string& path) {
   if (stat(path.c_str(), &st) != 0) throw InputError("cannot read '" + path + "': no such file");
   if (S_ISDIR(st.st_mode)) throw InputError("cannot read '" + path + "': it is a directory");
   if (!S_ISREG(st.st_mode)) throw InputError("cannot read '" + path + "': not a regular file");
-  if (access(path.c_str(), R_OK) != 0) throw InputError("cannot read '" + path + "': permission denied");
+  if (access(path.c_str(), R_OK) != 0)
+    throw InputError("cannot read '" + path + "': permission denied");
   if (st.st_size == 0) throw InputError("cannot read '" + path + "': the file is empty");
 }
 
-// A closed triangulated surface in the current model becomes a volume meshed by Gmsh.
-void volume_from_surfaces() {
-  gmsh::vectorpair surfaces;
-  gmsh::model::getEntities(surfaces, 2);
-  std::vector<int> tags;
-  for (const auto& [d, t] : surfaces) tags.push_back(t);
-  const int loop = gmsh::model::geo::addSurfaceLoop(tags);
-  gmsh::model::geo::addVolume({loop});
-  gmsh::model::geo::synchronize();
-  gmsh::model::mesh::generate(3);
+bool is_surface_format(const std::string& ext) {
+  return ext == ".stl" || ext == ".off" || ext == ".obj" || ext == ".ply";
 }
+
+// A surface file: tetrahedralized by Gmsh (3D), or a planar triangle mesh read as 2D (--dim 2).
+MeshData read_surface_file(const std::string& path, const ReadOptions& options) {
+  const std::string what = "'" + path + "'";
+  if (options.dim != 2) return tetrahedralize_surface(read_surface(path, true), what, options);
+  const SurfaceMesh s = read_surface(path, false);
+  MeshData d;
+  d.dim = 2;
+  double zmin = 1e300, zmax = -1e300, extent = 0;
+  for (std::size_t v = 0; v < s.xyz.size() / 3; ++v) {
+    zmin = std::min(zmin, s.xyz[3 * v + 2]);
+    zmax = std::max(zmax, s.xyz[3 * v + 2]);
+    extent = std::max({extent, std::fabs(s.xyz[3 * v]), std::fabs(s.xyz[3 * v + 1])});
+  }
+  if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+    throw InputError(what +
+                     ": the surface is not in a plane z = const, so it cannot be read as a "
+                     "2D mesh (--dim 2)");
+  d.tri.z0 = zmin;
+  for (std::size_t v = 0; v < s.xyz.size() / 3; ++v)
+    d.tri.xy.insert(d.tri.xy.end(), {s.xyz[3 * v], s.xyz[3 * v + 1]});
+  d.tri.tris = s.tris;
+  d.tri.model.name = std::filesystem::path(path).stem().string();
+  finish_mesh(d, what);
+  return d;
+}
+
+// Parameters of a .geo (like gmsh -setnumber NAME VALUE): Gmsh's API can only set ONELAB
+// parameters, which a DefineConstant with a Name does not read under its variable name. A small
+// wrapper script defines the variables, then includes the model (DefineConstant keeps a value
+// that is already defined; CurrentDir and relative paths still refer to the model's directory).
+class GeoWrapper {
+ public:
+  GeoWrapper(const std::string& path, const std::vector<std::pair<std::string, double>>& numbers) {
+    for (const auto& [name, value] : numbers) {
+      if (name.find('/') != std::string::npos) continue;  // a ONELAB name: set through the API
+      bool ok =
+          !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+      for (char c : name) ok &= std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+      if (!ok) throw InputError("--set: '" + name + "' is not a valid .geo variable name");
+      if (!std::isfinite(value))
+        throw InputError("--set: the value of '" + name + "' is not finite");
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      script_ += name + " = " + buf + ";\n";
+    }
+    if (script_.empty()) return;
+    const std::string abs = std::filesystem::absolute(path).string();
+    if (abs.find('"') != std::string::npos)
+      throw InputError("cannot read '" + path + "' with --set: its path contains a double quote");
+    script_ += "Include \"" + abs + "\";\n";
+    char tmpl[] = "/tmp/cvtmesh-set-XXXXXX.geo";
+    const int fd = mkstemps(tmpl, 4);
+    if (fd < 0)
+      throw InputError("cannot read '" + path + "' with --set: cannot create a temporary file");
+    std::FILE* f = fdopen(fd, "w");
+    const bool ok = f && std::fputs(script_.c_str(), f) >= 0;
+    if (f) std::fclose(f);
+    temp_ = tmpl;
+    if (!ok)
+      throw InputError("cannot read '" + path + "' with --set: cannot write a temporary file");
+  }
+  ~GeoWrapper() {
+    if (!temp_.empty()) std::remove(temp_.c_str());
+  }
+  GeoWrapper(const GeoWrapper&) = delete;
+  GeoWrapper& operator=(const GeoWrapper&) = delete;
+  // The file to open: the wrapper, or the model itself when there is nothing to set.
+  std::string file(const std::string& path) const { return temp_.empty() ? path : temp_; }
+
+ private:
+  std::string script_, temp_;
+};
 
 }  // namespace
 
@@ -51,6 +123,15 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = file_extension(path);
   if (const auto* reader = find_reader(ext)) {
     MeshData d = (*reader)(path);
+    if (options.dim > 0 && d.dim != options.dim)
+      throw InputError("'" + path + "' holds a " + std::to_string(d.dim) + "D mesh, not a " +
+                       std::to_string(options.dim) + "D one (--dim " + std::to_string(options.dim) +
+                       ")");
+    d.model().source = path;
+    return d;
+  }
+  if (is_surface_format(ext)) {
+    MeshData d = read_surface_file(path, options);
     d.model().source = path;
     return d;
   }
@@ -58,17 +139,20 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   MeshData data;
   std::string previous;
   gmsh::model::getCurrent(previous);
+  const GeoWrapper wrapper(
+      path, ext == ".geo" ? options.set_numbers : std::vector<std::pair<std::string, double>>{});
   gmsh_checked("cannot read '" + path + "'", [&] {
     for (const auto& [name, value] : options.set_numbers) gmsh::onelab::setNumber(name, {value});
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::open(path);
+    gmsh::open(wrapper.file(path));
   });
   gmsh_checked("cannot mesh '" + path + "'", [&] {
     if (!options.gmsh_optimize) {
       gmsh::option::setNumber("Mesh.Optimize", 0);
       gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
     }
-    if (options.mesh_size_factor > 0) gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
+    if (options.mesh_size_factor > 0)
+      gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
     gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
     int model_dim = gmsh::model::getDimension();
     gmsh::vectorpair ents;
@@ -87,10 +171,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     };
     const bool is_mesh_file = ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" ||
                               ext == ".inp" || ext == ".bdf" || ext == ".med";
-    const bool is_surface_file = ext == ".stl" || ext == ".off" || ext == ".obj" || ext == ".ply";
-    if (is_surface_file && options.dim != 2) {
-      volume_from_surfaces();
-    } else if (!is_mesh_file) {
+    if (!is_mesh_file) {
       const int want = options.dim > 0 ? options.dim : model_dim;
       if (!has_elements(want)) gmsh::model::mesh::generate(want);
     }

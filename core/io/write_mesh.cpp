@@ -6,6 +6,7 @@
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/read_mesh.h"
+#include "core/io/tetgen_io.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -13,7 +14,8 @@ namespace {
 
 // Formats Gmsh writes from a mesh (besides .msh).
 bool gmsh_writes(const std::string& ext) {
-  static const char* k[] = {".msh", ".unv", ".inp", ".bdf", ".p3d", ".diff", ".ir3", ".mail", ".su2", ".wrl", ".x3d", ".celum", ".off"};
+  static const char* k[] = {".msh",  ".unv", ".inp", ".bdf", ".p3d",   ".diff", ".ir3",
+                            ".mail", ".su2", ".wrl", ".x3d", ".celum", ".off"};
   for (const char* e : k)
     if (ext == e) return true;
   return false;
@@ -51,10 +53,33 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
   if (!session.owns() && !previous.empty()) gmsh::model::setCurrent(previous);
 }
 
+bool is_tetgen(const std::string& ext) {
+  return ext == ".node" || ext == ".ele";
+}
+
+// Formats that store per-element fields: .msh ($ElementData), VTK (cell data), TetGen (.ele
+// attributes).
+bool holds_fields(const std::string& ext) {
+  return ext == ".msh" || ext == ".vtk" || ext == ".vtu" || is_tetgen(ext);
+}
+
+// TetGen/Triangle: X.node, X.ele and X.face (X.edge in 2D) are written to temporaries and only
+// renamed when all three are complete.
+void write_tetgen_files(const MeshData& data, const std::string& path, const WriteOptions& o) {
+  const TetgenFiles files = tetgen_files(path, data.dim);
+  for (const std::string* f : {&files.node, &files.ele, &files.facets})
+    check_output_allowed(*f, o.policy);
+  AtomicFile node(files.node), ele(files.ele), facets(files.facets);
+  write_tetgen(data, {node.temp_path(), ele.temp_path(), facets.temp_path()}, o.fields);
+  node.commit();
+  ele.commit();
+  facets.commit();
+}
+
 }  // namespace
 
 std::string supported_write_formats() {
-  std::string s = ".msh (4.1 or 2.2)";
+  std::string s = ".msh (4.1 or 2.2), .node (TetGen .node/.ele/.face)";
   for (const auto& e : own_write_extensions()) s += ", " + e;
   s += ", and Gmsh's .unv .inp .bdf .su2 ...";
   return s;
@@ -62,13 +87,25 @@ std::string supported_write_formats() {
 
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
   const std::string ext = file_extension(path);
-  if (ext.empty()) throw OutputError("cannot write '" + path + "': no file extension to choose the format from");
+  if (ext.empty())
+    throw OutputError("cannot write '" + path + "': no file extension to choose the format from");
+  if (data.dim != 2 && data.dim != 3)
+    throw InvariantError("write_mesh: MeshData.dim must be 2 or 3");
   const MeshWriter* own = find_writer(ext);
-  if (!own && !gmsh_writes(ext))
+  if (!own && !gmsh_writes(ext) && !is_tetgen(ext))
     throw OutputError("cannot write '" + path + "': unknown output format '" + ext +
                       "' (supported: " + supported_write_formats() + ")");
+  if (!options.fields.empty() && !holds_fields(ext))
+    throw OutputError("cannot write '" + path + "': the " + ext +
+                      " format cannot hold per-element data (--quality); use .msh, .vtk, .vtu or "
+                      ".node");
+  if (is_tetgen(ext)) {
+    write_tetgen_files(data, path, options);
+    return;
+  }
   if (options.msh_version != 4.1 && options.msh_version != 2.2)
-    throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) + " (use 4.1 or 2.2)");
+    throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) +
+                      " (use 4.1 or 2.2)");
   check_output_allowed(path, options.policy);
   AtomicFile out(path);
   if (own)
