@@ -13,10 +13,12 @@
 
 #include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
+#include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/gmsh_surface.h"
 #include "core/io/surface_io.h"
+#include "core/io/write_mesh.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -146,37 +148,42 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     gmsh::option::setNumber("General.NumThreads", 1);
     gmsh::open(wrapper.file(path));
   });
-  gmsh_checked("cannot mesh '" + path + "'", [&] {
-    if (!options.gmsh_optimize) {
-      gmsh::option::setNumber("Mesh.Optimize", 0);
-      gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
-    }
-    if (options.mesh_size_factor > 0)
-      gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
-    gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
-    int model_dim = gmsh::model::getDimension();
-    gmsh::vectorpair ents;
-    gmsh::model::getEntities(ents);
-    if (ents.empty()) throw InputError("'" + path + "' contains no geometry and no mesh");
-    // Does the model already carry elements of its dimension?
-    auto has_elements = [&](int d) {
-      gmsh::vectorpair e;
-      gmsh::model::getEntities(e, d);
-      for (const auto& [dd, t] : e) {
-        std::vector<int> types;
-        gmsh::model::mesh::getElementTypes(types, dd, t);
-        if (!types.empty()) return true;
-      }
-      return false;
-    };
-    const bool is_mesh_file = ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" ||
-                              ext == ".inp" || ext == ".bdf" || ext == ".med";
-    if (!is_mesh_file) {
-      const int want = options.dim > 0 ? options.dim : model_dim;
-      if (!has_elements(want)) gmsh::model::mesh::generate(want);
-    }
-  });
   try {
+    gmsh_checked("cannot mesh '" + path + "'", [&] {
+      if (!options.gmsh_optimize) {
+        gmsh::option::setNumber("Mesh.Optimize", 0);
+        gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
+      }
+      if (options.mesh_size_factor > 0)
+        gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
+      gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
+      int model_dim = gmsh::model::getDimension();
+      gmsh::vectorpair ents;
+      gmsh::model::getEntities(ents);
+      if (ents.empty()) throw InputError("'" + path + "' contains no geometry and no mesh");
+      // Does the model already carry elements of its dimension?
+      auto has_elements = [&](int d) {
+        gmsh::vectorpair e;
+        gmsh::model::getEntities(e, d);
+        for (const auto& [dd, t] : e) {
+          std::vector<int> types;
+          gmsh::model::mesh::getElementTypes(types, dd, t);
+          if (!types.empty()) return true;
+        }
+        return false;
+      };
+      const bool is_mesh_file = ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" ||
+                                ext == ".inp" || ext == ".bdf" || ext == ".med";
+      if (!is_mesh_file) {
+        const int want = options.dim > 0 ? options.dim : model_dim;
+        if (!has_elements(want)) gmsh::model::mesh::generate(want);
+      } else {
+        // A .msh saved with physical groups may lack the boundary elements of other surfaces.
+        int want = options.dim;
+        if (want < 0) want = has_elements(3) ? 3 : 2;
+        add_missing_facets(want);
+      }
+    });
     data = mesh_from_gmsh(options.dim, "'" + path + "'");
   } catch (...) {
     gmsh::model::remove();
@@ -184,6 +191,11 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     throw;
   }
   data.model().source = path;
+  // The placeholder group of our MSH 2.2 output (see write_mesh.h) is not a user's group.
+  auto& groups = data.model().groups;
+  groups.erase(std::remove_if(groups.begin(), groups.end(),
+                              [](const PhysicalGroup& g) { return g.name == kUnassignedGroup; }),
+               groups.end());
   if (!session.owns()) {
     gmsh::model::remove();
     gmsh::model::setCurrent(previous);

@@ -10,13 +10,17 @@
 
 namespace cvtmesh {
 
+inline constexpr const char* kUnassignedGroup = "cvtmesh:unassigned";
+
 struct WriteOptions {
-  double msh_version = 4.1;            // 4.1 or 2.2
-  bool binary = false;                 // binary .msh
-  std::vector<ElementField> fields;    // per-element data ($ElementData / VTK cell data)
+  double msh_version = 4.1;          // 4.1 or 2.2
+  bool binary = false;               // binary .msh
+  std::vector<ElementField> fields;  // per-element data ($ElementData / VTK cell data)
   OutputPolicy policy;
 };
 
+// MSH 2.2 keeps physical groups only on elements that belong to one: entities in no group are
+// written in an extra group named kUnassignedGroup, which read_mesh drops.
 // Throws OutputError (cannot write, refused) or InputError (format cannot hold this mesh).
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
