@@ -45,15 +45,15 @@ void positive_tags(std::vector<int>& tags) {
     }
 }
 
-// Lazily allocated fresh facet tags: one for boundary facets, one for interfaces.
+// Fresh facet tags above the given ones: the first for boundary facets, the next for interfaces.
 struct FreshTags {
-  int next = 1;
-  int boundary = 0, interface = 0;
+  int boundary = 1, interface = 2;
   explicit FreshTags(const std::vector<int>& tags) {
-    for (int t : tags) next = std::max(next, t + 1);
+    for (int t : tags) boundary = std::max(boundary, t + 1);
+    interface = boundary + 1;
   }
-  int for_boundary() { return boundary ? boundary : (boundary = next++); }
-  int for_interface() { return interface ? interface : (interface = next++); }
+  int for_boundary() const { return boundary; }
+  int for_interface() const { return interface; }
 };
 
 // Keeps the vertices some element uses; returns the old -> new map (-1 for dropped).

@@ -112,8 +112,8 @@ void write_surface(const MeshData& data, const std::string& path) {
                        "separate sheets), which " +
                        "this surface format cannot hold");
   }
-  // STL: binary (single precision either way; OpenMesh's ASCII STL has blank lines that Gmsh's
-  // reader miscounts), with face normals. The other formats: ASCII, 17 digits.
+  // STL: binary (OpenMesh's ASCII STL has blank lines that Gmsh's reader miscounts), with face
+  // normals. The other formats: ASCII. (OpenMesh 9 writes single-precision coordinates.)
   OpenMesh::IO::Options opt;
   if (file_extension(path) == ".stl") {
     mesh.request_face_normals();

@@ -18,12 +18,14 @@ struct SurfaceMesh {
 // Only the vertices the triangles use are kept.
 SurfaceMesh boundary_surface(const MeshData& data);
 
-// Writes boundary_surface(data) with OpenMesh, format by the extension of `path` (ASCII, 17
-// digits). Throws InputError if the surface is non-manifold (OpenMesh cannot hold it), OutputError
-// if the file cannot be written.
+// Writes boundary_surface(data) with OpenMesh, format by the extension of `path` (ASCII; binary
+// for STL). OpenMesh 9 stores surface coordinates in single precision, in every format. Throws
+// InputError if the surface is non-manifold (OpenMesh cannot hold it), OutputError if the file
+// cannot be written.
 void write_surface(const MeshData& data, const std::string& path);
 
-// Reads a triangulated surface with OpenMesh (polygons are split into triangles). Rejects with an
+// Reads a triangulated surface with OpenMesh (polygons are split into triangles; coordinates in
+// single precision, as OpenMesh 9 reads them). Rejects with an
 // InputError naming the file: unreadable or garbage files, faces with invalid or repeated vertex
 // ids, non-finite coordinates, non-manifold or inconsistently oriented surfaces, and, if
 // `require_closed`, surfaces with boundary edges (open). Vertices no face uses are dropped.
