@@ -119,7 +119,8 @@ void TextReader::check_count(long long count, int min_tokens, const std::string&
   const long long room = static_cast<long long>(text_.size() - pos_) / 2 + 1;
   if (count < 0) fail("negative number of " + what);
   if (min_tokens > 0 && count > room / min_tokens)
-    fail("declares " + std::to_string(count) + " " + what + ", but the file is too short");
+    fail("declares " + std::to_string(count) + " " + what +
+         ", but the file is too short (truncated file?)");
 }
 
 }  // namespace cvtmesh
