@@ -123,6 +123,7 @@ long add_missing_facets(int dim) {
   };
 
   std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> added;
+  std::vector<std::size_t> unplaced;  // nodes of facets without any classification to go by
   long nb = 0;
   for (const auto& [key, fc] : facets) {
     const bool boundary = fc.count == 1;
@@ -157,7 +158,10 @@ long add_missing_facets(int dim) {
         }
       }
     }
-    if (!entity) continue;
+    if (!entity) {
+      unplaced.insert(unplaced.end(), fc.nodes.begin(), fc.nodes.begin() + npf);
+      continue;
+    }
     auto& [tags, nodes] = added[entity];
     tags.push_back(++max_tag);
     nodes.insert(nodes.end(), fc.nodes.begin(), fc.nodes.begin() + npf);
@@ -165,6 +169,20 @@ long add_missing_facets(int dim) {
   }
   for (const auto& [ent, b] : added)
     gmsh::model::mesh::addElementsByType(ent, facet_type, b.first, b.second);
+  if (!unplaced.empty()) {
+    // A mesh without lower-dimensional entities (only tets, say): the boundary becomes a new
+    // surface and its nodes, so far classified inside the volume, are moved onto it.
+    gmsh::vectorpair lower;
+    gmsh::model::getEntities(lower, dim - 1);
+    int tag = 0;
+    for (const auto& p : lower) tag = std::max(tag, p.second);
+    tag = gmsh::model::addDiscreteEntity(dim - 1, tag + 1);
+    std::vector<std::size_t> tags(unplaced.size() / npf);
+    for (auto& t : tags) t = ++max_tag;
+    gmsh::model::mesh::addElementsByType(tag, facet_type, tags, unplaced);
+    gmsh::model::mesh::reclassifyNodes();
+    nb += static_cast<long>(tags.size());
+  }
   return nb;
 }
 

@@ -10,8 +10,9 @@ namespace cvtmesh {
 // not an element yet becomes a triangle (line) element on the surface (curve) it belongs to: the
 // entity its nodes are classified on, or, for a facet whose nodes all lie on curves and points,
 // the boundary entity of its volume whose closure holds them. New elements get fresh tags.
-// Returns the number of facets added; facets it cannot place are left out (the mesh check then
-// reports an open boundary). Requires a live GmshSession.
+// Facets with nothing to go by (a file with tets only, no surface entities) go to a new entity,
+// and the nodes are then reclassified from the elements (gmsh reclassifyNodes).
+// Returns the number of facets added. Requires a live GmshSession.
 long add_missing_facets(int dim);
 
 }  // namespace cvtmesh

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
@@ -39,6 +40,34 @@ void check_readable(const std::string& path) {
   if (access(path.c_str(), R_OK) != 0)
     throw InputError("cannot read '" + path + "': permission denied");
   if (st.st_size == 0) throw InputError("cannot read '" + path + "': the file is empty");
+}
+
+// A .msh is a sequence of $Section ... $EndSection blocks (also in binary files): a file that does
+// not start with a section or does not end with an $End line is garbage or truncated. Gmsh
+// itself would try to parse garbage as a script, or read a truncated file up to where it stops.
+void check_msh_frame(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const std::size_t first = head.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos || head[first] != '$')
+    throw InputError("cannot read '" + path +
+                     "': not a Gmsh .msh file (it does not start with $MeshFormat)");
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff n = std::min<std::streamoff>(size, 256);
+  std::string tail(static_cast<std::size_t>(n), '\0');
+  in.seekg(size - n);
+  in.read(tail.data(), n);
+  const std::size_t last = tail.find_last_not_of(" \t\r\n");
+  const std::size_t line = last == std::string::npos ? 0 : tail.find_last_of('\n', last);
+  const std::string end =
+      last == std::string::npos ? "" : tail.substr(line == std::string::npos ? 0 : line + 1);
+  if (end.rfind("$End", 0) != 0)
+    throw InputError("cannot read '" + path +
+                     "': the file is truncated (it does not end with an $End... line)");
 }
 
 bool is_surface_format(const std::string& ext) {
@@ -137,6 +166,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     d.model().source = path;
     return d;
   }
+  if (ext == ".msh") check_msh_frame(path);
   GmshSession session;
   MeshData data;
   std::string previous;
