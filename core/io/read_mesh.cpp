@@ -100,53 +100,6 @@ MeshData read_surface_file(const std::string& path, const ReadOptions& options) 
   return d;
 }
 
-// Parameters of a .geo (like gmsh -setnumber NAME VALUE): Gmsh's API can only set ONELAB
-// parameters, which a DefineConstant with a Name does not read under its variable name. A small
-// wrapper script defines the variables, then includes the model (DefineConstant keeps a value
-// that is already defined; CurrentDir and relative paths still refer to the model's directory).
-class GeoWrapper {
- public:
-  GeoWrapper(const std::string& path, const std::vector<std::pair<std::string, double>>& numbers) {
-    for (const auto& [name, value] : numbers) {
-      if (name.find('/') != std::string::npos) continue;  // a ONELAB name: set through the API
-      bool ok =
-          !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
-      for (char c : name) ok &= std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-      if (!ok) throw InputError("--set: '" + name + "' is not a valid .geo variable name");
-      if (!std::isfinite(value))
-        throw InputError("--set: the value of '" + name + "' is not finite");
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "%.17g", value);
-      script_ += name + " = " + buf + ";\n";
-    }
-    if (script_.empty()) return;
-    const std::string abs = std::filesystem::absolute(path).string();
-    if (abs.find('"') != std::string::npos)
-      throw InputError("cannot read '" + path + "' with --set: its path contains a double quote");
-    script_ += "Include \"" + abs + "\";\n";
-    char tmpl[] = "/tmp/cvtmesh-set-XXXXXX.geo";
-    const int fd = mkstemps(tmpl, 4);
-    if (fd < 0)
-      throw InputError("cannot read '" + path + "' with --set: cannot create a temporary file");
-    std::FILE* f = fdopen(fd, "w");
-    const bool ok = f && std::fputs(script_.c_str(), f) >= 0;
-    if (f) std::fclose(f);
-    temp_ = tmpl;
-    if (!ok)
-      throw InputError("cannot read '" + path + "' with --set: cannot write a temporary file");
-  }
-  ~GeoWrapper() {
-    if (!temp_.empty()) std::remove(temp_.c_str());
-  }
-  GeoWrapper(const GeoWrapper&) = delete;
-  GeoWrapper& operator=(const GeoWrapper&) = delete;
-  // The file to open: the wrapper, or the model itself when there is nothing to set.
-  std::string file(const std::string& path) const { return temp_.empty() ? path : temp_; }
-
- private:
-  std::string script_, temp_;
-};
-
 }  // namespace
 
 MeshData read_mesh(const std::string& path, const ReadOptions& options) {
@@ -171,12 +124,35 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   MeshData data;
   std::string previous;
   gmsh::model::getCurrent(previous);
-  const GeoWrapper wrapper(
-      path, ext == ".geo" ? options.set_numbers : std::vector<std::pair<std::string, double>>{});
+  // Parameters of a .geo are defined before it is parsed (its DefineConstant[] then keeps them),
+  // like gmsh -setnumber: through a temporary wrapper that sets them and Includes the model.
+  std::string wrapper_dir, wrapper;
+  if (ext == ".geo" && (!options.set_numbers.empty() || !options.set_strings.empty())) {
+    char tmpl[] = "/tmp/cvtmesh-geo-XXXXXX";
+    if (!mkdtemp(tmpl))
+      throw InputError("cannot create a temporary directory to set the parameters of '" + path +
+                       "'");
+    wrapper_dir = tmpl;
+    wrapper = wrapper_dir + "/" + std::filesystem::path(path).filename().string();
+    std::ofstream w(wrapper);
+    for (const auto& [name, value] : options.set_numbers) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      w << name << " = " << buf << ";\n";
+    }
+    for (const auto& [name, value] : options.set_strings) w << name << " = \"" << value << "\";\n";
+    w << "Include \"" << std::filesystem::absolute(path).string() << "\";\n";
+  }
+  struct RemoveWrapper {
+    std::string dir, file;
+    ~RemoveWrapper() {
+      if (!file.empty()) std::remove(file.c_str());
+      if (!dir.empty()) rmdir(dir.c_str());
+    }
+  } remove_wrapper{wrapper_dir, wrapper};
   gmsh_checked("cannot read '" + path + "'", [&] {
-    for (const auto& [name, value] : options.set_numbers) gmsh::onelab::setNumber(name, {value});
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::open(wrapper.file(path));
+    gmsh::open(wrapper.empty() ? path : wrapper);
   });
   try {
     gmsh_checked("cannot mesh '" + path + "'", [&] {

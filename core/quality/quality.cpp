@@ -12,7 +12,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 
-double sgn(double v) { return v < 0 ? -1.0 : 1.0; }
+double sgn(double v) {
+  return v < 0 ? -1.0 : 1.0;
+}
 
 // Gmsh's "ICN" (Plugin(AnalyseMeshQuality), jacobianBasedQuality::minICNMeasure) for a linear
 // tet: with J the Jacobian of the map from the ideal (regular) tet, Gmsh evaluates
@@ -79,11 +81,16 @@ Measure measure_from_string(const std::string& name) {
 
 std::string measure_name(Measure m) {
   switch (m) {
-    case Measure::kQ: return "q";
-    case Measure::kRadiusRatio: return "radius-ratio";
-    case Measure::kMinAngle: return "min-angle";
-    case Measure::kMaxAngle: return "max-angle";
-    case Measure::kGmshIcn: return "icn";
+    case Measure::kQ:
+      return "q";
+    case Measure::kRadiusRatio:
+      return "radius-ratio";
+    case Measure::kMinAngle:
+      return "min-angle";
+    case Measure::kMaxAngle:
+      return "max-angle";
+    case Measure::kGmshIcn:
+      return "icn";
   }
   return "?";
 }
@@ -111,7 +118,8 @@ double tet_quality(const double* a, const double* b, const double* c, const doub
       const auto ang = tet_dihedral_angles(a, b, c, d);
       return *std::max_element(ang.begin(), ang.end()) * kDeg;
     }
-    case Measure::kGmshIcn: return tet_icn(a, b, c, d);
+    case Measure::kGmshIcn:
+      return tet_icn(a, b, c, d);
   }
   return 0;
 }
