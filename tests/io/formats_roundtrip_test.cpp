@@ -111,6 +111,15 @@ void expect_same_facets_and_tags(const MeshData& a, const MeshData& b) {
 
 // ---------------------------------------------------------------------------------------------
 
+TEST(ReadMesh, GeoParametersAreSetBeforeParsing) {
+  // --set two_regions=1 (a DefineConstant with a ONELAB name) selects the two-region variant.
+  std::set<int> two(two_regions().tet.tet_region.begin(), two_regions().tet.tet_region.end());
+  std::set<int> one(cube_minus_ball().tet.tet_region.begin(),
+                    cube_minus_ball().tet.tet_region.end());
+  EXPECT_EQ(two.size(), 2u);
+  EXPECT_EQ(one.size(), 1u);
+}
+
 TEST(VtkIo, LegacyAndXmlRoundTripWithCellData) {
   for (const MeshData* d : {&two_regions(), &plate()}) {
     const std::vector<ElementField> fields = quality_fields(*d);

@@ -51,6 +51,12 @@ void round_trip_41(const std::string& original) {
   write_mesh(d1, copy);
   const MeshData d2 = read_mesh(copy);
   EXPECT_TRUE(canon(d1) == canon(d2)) << "MeshData differs after .msh 4.1 -> MeshData -> .msh";
+  // Binary .msh too.
+  WriteOptions bin;
+  bin.binary = true;
+  const std::string copy_bin = dir + "/copy_bin.msh";
+  write_mesh(d1, copy_bin, bin);
+  EXPECT_TRUE(canon(d1) == canon(read_mesh(copy_bin))) << "binary .msh round trip differs";
   // And Gmsh itself sees the same model in both files.
   expect_same_gmsh_model(original, copy);
 }
@@ -151,41 +157,45 @@ TEST(MshQualityViews, OpenInGmshWithOurPerElementValues) {
   const MeshData d = read_mesh(testing::geo_path("cube_sphere.geo"));
   const std::vector<ElementField> fields = quality_fields(d);
   ASSERT_EQ(fields.size(), 3u);
-  WriteOptions o;
-  o.fields = fields;
-  const std::string out = dir + "/q.msh";
-  write_mesh(d, out, o);
-  const testing::GmshDump dump = gmsh_dump(out);
-  ASSERT_EQ(dump.views.size(), 3u);
-  for (const auto& f : fields) {
-    auto it = dump.views.find(f.name);
-    ASSERT_NE(it, dump.views.end()) << "no view '" << f.name << "'";
-    ASSERT_EQ(it->second.size(), f.values.size());
-    // Elements keep their tags: value i belongs to tet i's tag.
-    for (std::size_t i = 0; i < f.values.size(); ++i) {
-      const double got = it->second.at(d.tet.tet_tags[i]);
-      EXPECT_NEAR(got, f.values[i], 1e-12 * std::max(1.0, std::fabs(f.values[i]))) << f.name;
+  for (const bool binary : {false, true}) {
+    SCOPED_TRACE(binary ? "binary" : "ASCII");
+    WriteOptions o;
+    o.fields = fields;
+    o.binary = binary;
+    const std::string out = dir + (binary ? "/qb.msh" : "/q.msh");
+    write_mesh(d, out, o);
+    const testing::GmshDump dump = gmsh_dump(out);
+    ASSERT_EQ(dump.views.size(), 3u);
+    for (const auto& f : fields) {
+      auto it = dump.views.find(f.name);
+      ASSERT_NE(it, dump.views.end()) << "no view '" << f.name << "'";
+      ASSERT_EQ(it->second.size(), f.values.size());
+      // Elements keep their tags: value i belongs to tet i's tag.
+      for (std::size_t i = 0; i < f.values.size(); ++i) {
+        const double got = it->second.at(d.tet.tet_tags[i]);
+        EXPECT_NEAR(got, f.values[i], 1e-12 * std::max(1.0, std::fabs(f.values[i]))) << f.name;
+      }
     }
+    // The views do not get in the way of reading the mesh back.
+    const MeshData back = read_mesh(out);
+    // (The mesh came from a .geo: Gmsh's ASCII .msh writer prints 16 significant digits, so the
+    // coordinates agree to the last bit or so; a .msh -> .msh round trip is exact, see above.)
+    const testing::MeshCanon a = canon(back), b = canon(d);
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    for (const auto& [tag, n] : b.nodes) {
+      auto it = a.nodes.find(tag);
+      ASSERT_NE(it, a.nodes.end());
+      EXPECT_NEAR(std::get<0>(it->second), std::get<0>(n), 1e-15);
+      EXPECT_NEAR(std::get<1>(it->second), std::get<1>(n), 1e-15);
+      EXPECT_NEAR(std::get<2>(it->second), std::get<2>(n), 1e-15);
+      EXPECT_EQ(std::get<3>(it->second), std::get<3>(n));
+      EXPECT_EQ(std::get<4>(it->second), std::get<4>(n));
+    }
+    EXPECT_TRUE(a.cells == b.cells);
+    EXPECT_TRUE(a.facets == b.facets);
+    EXPECT_TRUE(a.extra == b.extra);
+    EXPECT_TRUE(a.groups == b.groups);
   }
-  // The views do not get in the way of reading the mesh back.
-  const MeshData back = read_mesh(out);
-  // (The mesh came from a .geo: Gmsh's ASCII .msh writer prints 16 significant digits, so the
-  // coordinates agree to the last bit or so; a .msh -> .msh round trip is exact, see above.)
-  const testing::MeshCanon a = canon(back), b = canon(d);
-  ASSERT_EQ(a.nodes.size(), b.nodes.size());
-  for (const auto& [tag, n] : b.nodes) {
-    auto it = a.nodes.find(tag);
-    ASSERT_NE(it, a.nodes.end());
-    EXPECT_NEAR(std::get<0>(it->second), std::get<0>(n), 1e-15);
-    EXPECT_NEAR(std::get<1>(it->second), std::get<1>(n), 1e-15);
-    EXPECT_NEAR(std::get<2>(it->second), std::get<2>(n), 1e-15);
-    EXPECT_EQ(std::get<3>(it->second), std::get<3>(n));
-    EXPECT_EQ(std::get<4>(it->second), std::get<4>(n));
-  }
-  EXPECT_TRUE(a.cells == b.cells);
-  EXPECT_TRUE(a.facets == b.facets);
-  EXPECT_TRUE(a.extra == b.extra);
-  EXPECT_TRUE(a.groups == b.groups);
 }
 
 }  // namespace
