@@ -41,6 +41,7 @@ struct Comparison {
     if (co.save_dir.empty()) return;
     WriteOptions w;
     w.fields = quality_fields(d);
+    w.policy.force = true;  // --save refreshes its own directory
     write_mesh(d, co.save_dir + "/" + name + ".msh", w);
   }
 
