@@ -5,7 +5,8 @@
 
 namespace cvtmesh {
 
-void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3, Polytope& p) {
+void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3,
+                  Polytope& p) {
   const Vec3 v[4] = {vec3(p0), vec3(p1), vec3(p2), vec3(p3)};
   static const int F[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
   p.clear();
@@ -135,7 +136,8 @@ Moments polytope_moments(const Polytope& p, const Vec3& z) {
       const double w = vol / 20.0;
       for (int r = 0; r < 3; ++r)
         for (int q = r; q < 3; ++q)
-          s2[3 * r + q] += w * (s[r] * s[q] + c[r] * c[q] + a[r] * a[q] + b[r] * b[q] + e[r] * e[q]);
+          s2[3 * r + q] +=
+              w * (s[r] * s[q] + c[r] * c[q] + a[r] * a[q] + b[r] * b[q] + e[r] * e[q]);
     }
   }
   for (int r = 0; r < 3; ++r)
@@ -149,7 +151,8 @@ double face_area(const Polytope& p, int id) {
     if (p.face_id[f] != id) continue;
     const int b0 = p.face_start[f], b1 = p.face_start[f + 1];
     Vec3 s{0, 0, 0};
-    for (int i = b0 + 1; i + 1 < b1; ++i) s = s + cross(p.pts[i] - p.pts[b0], p.pts[i + 1] - p.pts[b0]);
+    for (int i = b0 + 1; i + 1 < b1; ++i)
+      s = s + cross(p.pts[i] - p.pts[b0], p.pts[i + 1] - p.pts[b0]);
     a += 0.5 * norm(s);
   }
   return a;

@@ -10,9 +10,9 @@
 namespace cvtmesh {
 
 struct Polytope {
-  std::vector<Vec3> pts;         // the faces' vertices, face after face
-  std::vector<int> face_start;   // #faces + 1 offsets into pts
-  std::vector<int> face_id;      // who made the face: 0..3 = tet faces, >= 4 = clip planes
+  std::vector<Vec3> pts;        // the faces' vertices, face after face
+  std::vector<int> face_start;  // #faces + 1 offsets into pts
+  std::vector<int> face_id;     // who made the face: 0..3 = tet faces, >= 4 = clip planes
   int nb_faces() const { return static_cast<int>(face_id.size()); }
   void clear() {
     pts.clear();
@@ -22,7 +22,8 @@ struct Polytope {
 };
 
 // The tetrahedron p0..p3 as a polytope; face f (opposite vertex f) has id f.
-void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3, Polytope& out);
+void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3,
+                  Polytope& out);
 
 // Keeps the part {x : n.x <= d}; the new face gets `id`. `scratch` is a work buffer. Returns false
 // if nothing (of positive volume) is left. `eps`: points within eps of the plane count as on it.

@@ -151,3 +151,35 @@ TEST(Lloyd3, MeshSizingKeepsGradingAndImprovesQuality) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+TEST(Lloyd3, AndersonAcceleratedAcceptedEnergiesNeverIncrease) {
+  ReadOptions ro;
+  ro.gmsh_optimize = false;
+  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
+  MeshData d = read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  Lloyd3Options o;
+  o.lloyd.max_iterations = 10;
+  o.lloyd.tolerance = 0;
+  o.relaxation = 1.5;
+  o.anderson_depth = 5;
+  std::vector<double> accepted;
+  int restarts = 0;
+  lloyd_optimize_3d(d.tet, o, [&](const LloydStep& s) {
+    if (s.restarted) {
+      ++restarts;
+      ASSERT_FALSE(accepted.empty());
+      EXPECT_GT(s.energy, accepted.back());  // a restart happens only when the energy rose
+    } else {
+      accepted.push_back(s.energy);
+    }
+  });
+  ASSERT_GE(accepted.size(), 5u);
+  for (std::size_t i = 1; i < accepted.size(); ++i) EXPECT_LE(accepted[i], accepted[i - 1] * (1 + 1e-12));
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+}
+
+}  // namespace
+}  // namespace cvtmesh
