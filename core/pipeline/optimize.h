@@ -1,6 +1,6 @@
 // The named methods users pick. 3D: cvdt (Lloyd CVDT), cvdt+swap (the paper's CVDT+SWAP),
 // cvdt+swap+smooth (CVDT+SWAP then the guarded smoothing + dihedral flips polish), combined (the
-// classical CombOpt), swap (flips only). 2D: cvdt, dl, wdl.
+// classical CombOpt), swap (flips only), smooth (the polish alone). 2D: cvdt, dl, wdl.
 // One entry point for the CLI, the GUI panel and the scripting front ends.
 #pragma once
 #include <functional>
