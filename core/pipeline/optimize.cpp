@@ -97,8 +97,9 @@ void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   co.max_iterations = o.max_iterations;
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
-  const CombinedStats st =
-      combined_optimize(mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
+  co.swap.guard_floor = o.polish_q_floor;
+  const CombinedStats st = combined_optimize(
+      mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
   r.iterations = st.iterations;
   r.converged = st.converged;
 }

@@ -31,6 +31,9 @@ struct OptimizeOptions {
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";
   std::function<double(const double* x)> size_function;  // x has d coordinates
+  // The smooth polish's dihedral flips may lower a tet's Q, but never below min(its old
+  // minimum, this floor).
+  double polish_q_floor = 0.4;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   std::function<void(const OptimizeProgress&)> progress;

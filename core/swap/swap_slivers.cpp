@@ -131,7 +131,7 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
         if (options.use_guard) {
           const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
           const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
-          if (guard_new < guard_old) return false;
+          if (guard_new < std::min(guard_old, options.guard_floor)) return false;
         }
         if (!have_best || plan.new_min > best.new_min) {
           best = std::move(plan);

@@ -30,6 +30,9 @@ struct SwapOptions {
   // must not lower the minimum Q).
   bool use_guard = false;
   Measure guard_measure = Measure::kQ;
+  // The guard only protects values below this floor: the new minimum must be at least
+  // min(old minimum, guard_floor) (-inf: must not decrease at all).
+  double guard_floor = -std::numeric_limits<double>::infinity();
 };
 
 struct SwapStats {
