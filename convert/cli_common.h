@@ -24,6 +24,7 @@ struct InputOpts {
   std::string path;
   int dim = -1;
   std::vector<std::string> set_numbers;
+  std::vector<std::string> set_strings;
   double size_factor = 0;
   ReadOptions to_read_options() const;
 };
@@ -47,6 +48,10 @@ std::string render(const QualityTable& t, const std::string& format);
 // One register function per subcommand (convert/cmd_<name>.cpp).
 void register_stats(CLI::App& app);
 void register_convert(CLI::App& app);
+void register_optimize(CLI::App& app);
+void register_mesh(CLI::App& app);
+void register_compare(CLI::App& app);
+void register_check(CLI::App& app);
 void register_perturb(CLI::App& app);
 
 }  // namespace cvtmesh::cli

@@ -9,6 +9,10 @@ namespace cvtmesh::cli {
 void register_commands(CLI::App& app) {
   register_stats(app);
   register_convert(app);
+  register_optimize(app);
+  register_mesh(app);
+  register_compare(app);
+  register_check(app);
   register_perturb(app);
 }
 

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
@@ -28,7 +30,8 @@ void check_readable(const std::string& path) {
   if (stat(path.c_str(), &st) != 0) throw InputError("cannot read '" + path + "': no such file");
   if (S_ISDIR(st.st_mode)) throw InputError("cannot read '" + path + "': it is a directory");
   if (!S_ISREG(st.st_mode)) throw InputError("cannot read '" + path + "': not a regular file");
-  if (access(path.c_str(), R_OK) != 0) throw InputError("cannot read '" + path + "': permission denied");
+  if (access(path.c_str(), R_OK) != 0)
+    throw InputError("cannot read '" + path + "': permission denied");
   if (st.st_size == 0) throw InputError("cannot read '" + path + "': the file is empty");
 }
 
@@ -58,17 +61,43 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   MeshData data;
   std::string previous;
   gmsh::model::getCurrent(previous);
+  // Parameters of a .geo are defined before it is parsed (its DefineConstant[] then keeps them),
+  // like gmsh -setnumber: through a temporary wrapper that sets them and Includes the model.
+  std::string wrapper_dir, wrapper;
+  if (ext == ".geo" && (!options.set_numbers.empty() || !options.set_strings.empty())) {
+    char tmpl[] = "/tmp/cvtmesh-geo-XXXXXX";
+    if (!mkdtemp(tmpl))
+      throw InputError("cannot create a temporary directory to set the parameters of '" + path +
+                       "'");
+    wrapper_dir = tmpl;
+    wrapper = wrapper_dir + "/" + std::filesystem::path(path).filename().string();
+    std::ofstream w(wrapper);
+    for (const auto& [name, value] : options.set_numbers) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      w << name << " = " << buf << ";\n";
+    }
+    for (const auto& [name, value] : options.set_strings) w << name << " = \"" << value << "\";\n";
+    w << "Include \"" << std::filesystem::absolute(path).string() << "\";\n";
+  }
+  struct RemoveWrapper {
+    std::string dir, file;
+    ~RemoveWrapper() {
+      if (!file.empty()) std::remove(file.c_str());
+      if (!dir.empty()) rmdir(dir.c_str());
+    }
+  } remove_wrapper{wrapper_dir, wrapper};
   gmsh_checked("cannot read '" + path + "'", [&] {
-    for (const auto& [name, value] : options.set_numbers) gmsh::onelab::setNumber(name, {value});
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::open(path);
+    gmsh::open(wrapper.empty() ? path : wrapper);
   });
   gmsh_checked("cannot mesh '" + path + "'", [&] {
     if (!options.gmsh_optimize) {
       gmsh::option::setNumber("Mesh.Optimize", 0);
       gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
     }
-    if (options.mesh_size_factor > 0) gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
+    if (options.mesh_size_factor > 0)
+      gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
     gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
     int model_dim = gmsh::model::getDimension();
     gmsh::vectorpair ents;
