@@ -90,17 +90,20 @@ int main(int argc, char** argv) {
   int max_it = 5000;
   double tol = 1e-10;
   app.add_option("--out", out_dir, "directory for the SVG pictures (none if empty)");
-  app.add_option("--quad-n", quad_n, "quad: divisions per side (geo/quad.geo Parameters/n)");
-  app.add_option("--washer-h0", h0, "washer: size at the inner circle (Parameters/h0)");
-  app.add_option("--washer-g", g, "washer: size gradient (Parameters/g)");
+  app.add_option("--quad-n", quad_n, "quad: divisions per side (geo/quad.geo n)");
+  app.add_option("--washer-h0", h0, "washer: size at the inner circle (geo/washer.geo h0)");
+  app.add_option("--washer-g", g, "washer: size gradient (geo/washer.geo g)");
   app.add_option("--seed", seed, "RandPert seed");
   app.add_option("--max-iterations", max_it, "iteration cap of DL, WDL and Lloyd");
   app.add_option("--tolerance", tol, "stop on the normalised D (core/cvt/lloyd.h)");
   std::vector<std::string> methods = {"dl", "wdl", "cvt"}, examples = {"quad", "washer"};
   app.add_option("--methods", methods, "methods to run (dl, wdl, cvt)");
   app.add_option("--examples", examples, "examples to run (quad, washer)");
-  app.add_option("--washer-r1", r1, "washer: outer radius (Parameters/r1)");
-  double rand_amount = -1, clus_amount = -1;
+  app.add_option("--washer-r1", r1, "washer: outer radius (geo/washer.geo r1)");
+  double rand_amount = -1, clus_amount = -1, relaxation = 1;
+  int anderson = 0;
+  app.add_option("--relaxation", relaxation, "Lloyd over-relaxation (1 = the paper's Lloyd)");
+  app.add_option("--anderson", anderson, "Lloyd Anderson acceleration depth (0 = the paper's Lloyd)");
   app.add_option("--random-amount", rand_amount, "RandPert amount (default: perturb_2d's)");
   app.add_option("--cluster-amount", clus_amount, "ClusPert amount (default: perturb_2d's)");
   CLI11_PARSE(app, argc, argv);
@@ -124,18 +127,16 @@ int main(int argc, char** argv) {
   std::vector<Example> ex(2);
   ex[0].name = "quad";
   ex[0].title = "quad";
-  ex[0].initial = read_mesh(src + "/geo/quad.geo",
-                            {.dim = 2, .set_numbers = {{"Parameters/n", double(quad_n)}}});
+  ex[0].initial =
+      read_mesh(src + "/geo/quad.geo", {.dim = 2, .set_numbers = {{"n", double(quad_n)}}});
   ex[0].sizing.kind = "uniform";
   ex[0].sizing.h = 1.0 / quad_n;
   ex[0].h = [=](const double*) { return 1.0 / quad_n; };
   ex[1].name = "washer";
   ex[1].title = "washer";
-  ex[1].initial = read_mesh(src + "/geo/washer.geo", {.dim = 2,
-                                                      .set_numbers = {{"Parameters/h0", h0},
-                                                                      {"Parameters/g", g},
-                                                                      {"Parameters/r0", r0},
-                                                                      {"Parameters/r1", r1}}});
+  ex[1].initial =
+      read_mesh(src + "/geo/washer.geo",
+                {.dim = 2, .set_numbers = {{"h0", h0}, {"g", g}, {"r0", r0}, {"r1", r1}}});
   ex[1].h = [=](const double* x) { return h0 + g * (std::hypot(x[0], x[1]) - r0); };
   ex[1].sizing.kind = "function";
   ex[1].sizing.function = ex[1].h;
@@ -174,7 +175,10 @@ int main(int argc, char** argv) {
         const auto t0 = std::chrono::steady_clock::now();
         LloydResult lr;
         if (std::string(method) == "cvt") {
-          lr = lloyd_optimize_2d(r.mesh, {.lloyd = loop, .sizing = e.sizing});
+          lr = lloyd_optimize_2d(r.mesh, {.lloyd = loop,
+                                          .sizing = e.sizing,
+                                          .relaxation = relaxation,
+                                          .anderson_depth = anderson});
         } else {
           Smooth2dOptions so;
           so.loop = loop;

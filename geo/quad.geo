@@ -4,8 +4,8 @@
 // diagonals follow the short diagonal of each cell; with regular = 0 Gmsh's Frontal-Delaunay
 // algorithm (advancing-front-like, as in the paper) meshes it with the uniform size L/n, which
 // on this domain also gives the regular mesh.
-DefineConstant[ n = {12, Name "Parameters/n"} ];
-DefineConstant[ regular = {1, Name "Parameters/regular"} ];
+DefineConstant[ n = {12, Name "Parameters/divisions per side n"} ];
+DefineConstant[ regular = {1, Name "Parameters/structured regular mesh"} ];
 L = 1;
 h = L / n;
 Point(1) = {0, 0, 0, h};

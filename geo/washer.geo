@@ -3,10 +3,10 @@
 // (an advancing-front-like mesher, as in the paper).
 //   size h(r) = h0 + g * (r - r0),  r0 <= r <= r1
 // The same h is the analytic sizing field used by the 2D optimizers (docs/reproduction-2d.md).
-DefineConstant[ r0 = {1.0, Name "Parameters/r0"} ];
-DefineConstant[ r1 = {2.5, Name "Parameters/r1"} ];
-DefineConstant[ h0 = {0.08, Name "Parameters/h0"} ];
-DefineConstant[ g = {0.12, Name "Parameters/g"} ];
+DefineConstant[ r0 = {1.0, Name "Parameters/inner radius r0"} ];
+DefineConstant[ r1 = {2.5, Name "Parameters/outer radius r1"} ];
+DefineConstant[ h0 = {0.08, Name "Parameters/size h0 at the inner circle"} ];
+DefineConstant[ g = {0.08, Name "Parameters/size gradient g"} ];
 
 Point(1) = {0, 0, 0};
 Point(2) = {r0, 0, 0};

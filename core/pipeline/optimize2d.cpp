@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "core/cvt/lloyd_optimize_2d.h"
-#include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
 #include "core/smoothing/dl_optimize_2d.h"
 #include "core/smoothing/wdl_optimize_2d.h"
 #include "core/swap/flip2d_pass.h"
@@ -24,6 +24,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   OptimizeResult r;
   r.before = quality_stats(mesh, "before");
+  const TriMesh2 input = mesh;
 
   SizingField2dOptions sizing;
   sizing.kind = options.sizing;
@@ -43,6 +44,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
       const QualityStats q = quality_stats(mesh, "");
       p.q_min = q.q_min;
       p.q_avg = q.q_avg;
+      p.restarted = s.restarted;
       options.progress(p);
     };
 
@@ -51,6 +53,8 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
     Lloyd2dOptions lo;
     lo.lloyd = loop;
     lo.sizing = sizing;
+    lo.relaxation = options.relaxation;
+    lo.anderson_depth = options.anderson_depth;
     lr = lloyd_optimize_2d(mesh, lo, progress);
     if (method == "cvdt+swap") flip2d_pass(mesh, {.criterion = FlipCriterion2d::kQuality});
   } else {
@@ -59,12 +63,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
     so.sizing = sizing;
     lr = phase == "dl" ? dl_optimize_2d(mesh, so, progress) : wdl_optimize_2d(mesh, so, progress);
   }
-  if (options.verify) {
-    const MeshCheck c = check_mesh(mesh);
-    if (!c.ok)
-      throw InvariantError("optimize_2d: invalid mesh after " + method + ": " +
-                           (c.problems.empty() ? std::string() : c.problems[0]));
-  }
+  if (options.verify) verify_optimized(input, mesh);
   r.after = quality_stats(mesh, method);
   r.iterations = lr.iterations;
   r.converged = lr.converged;

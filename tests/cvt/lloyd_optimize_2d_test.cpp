@@ -42,7 +42,7 @@ double max_nearest_distance(const TriMesh2& a, const TriMesh2& b) {
 // regular hexagon centred at its generator).
 TEST(Lloyd2d, QuadEnergyDecreasesAndReturnsToRegularMesh) {
   const MeshData d =
-      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"Parameters/n", 8}}});
+      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"n", 8}}});
   TriMesh2 m = d.tri;
   perturb_2d(m, {.kind = Perturbation2d::kRandom, .seed = 3});
   const TriMesh2 start = m;
@@ -78,8 +78,7 @@ TEST(Lloyd2d, QuadEnergyDecreasesAndReturnsToRegularMesh) {
 TEST(Lloyd2d, WasherGradedDensityProperties) {
   const double h0 = 0.16, g = 0.16;
   const MeshData d =
-      read_mesh(testing::geo_path("washer.geo"),
-                {.dim = 2, .set_numbers = {{"Parameters/h0", h0}, {"Parameters/g", g}}});
+      read_mesh(testing::geo_path("washer.geo"), {.dim = 2, .set_numbers = {{"h0", h0}, {"g", g}}});
   TriMesh2 m = d.tri;
   perturb_2d(m, {.kind = Perturbation2d::kCluster, .seed = 1});
   const TriMesh2 start = m;
@@ -105,6 +104,38 @@ TEST(Lloyd2d, WasherGradedDensityProperties) {
   EXPECT_GT(after.q_min, before.q_min + 0.3);
   EXPECT_GT(after.q_avg, before.q_avg);
   EXPECT_GT(after.q_avg, quality_stats(d.tri, "gmsh").q_avg - 0.01);  // as good as Gmsh's
+}
+
+// Over-relaxed, Anderson-accelerated Lloyd (the product default of optimize()): the energies of
+// the accepted configurations never increase (a rejected accelerated step is replaced by the
+// plain one), the boundary never moves, and it reaches the same regular mesh.
+TEST(Lloyd2d, AcceleratedKeepsAcceptedEnergiesMonotone) {
+  const MeshData d =
+      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"n", 8}}});
+  TriMesh2 m = d.tri;
+  perturb_2d(m, {.kind = Perturbation2d::kCluster});
+  const TriMesh2 start = m;
+  Lloyd2dOptions o;
+  o.lloyd.max_iterations = 500;
+  o.lloyd.tolerance = 1e-12;
+  o.sizing.kind = "uniform";
+  o.relaxation = 1.5;
+  o.anderson_depth = 5;
+  std::vector<double> accepted;
+  int invalid = 0;
+  const LloydResult r = lloyd_optimize_2d(m, o, [&](const LloydStep& s) {
+    if (!s.restarted) accepted.push_back(s.energy);
+    if (!check_mesh(m).ok) ++invalid;
+  });
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(invalid, 0);
+  for (std::size_t k = 1; k < accepted.size(); ++k)
+    EXPECT_LE(accepted[k], accepted[k - 1] * (1 + 1e-12)) << "accepted step " << k;
+  for (int v : fixed_vertices(m)) {
+    EXPECT_EQ(m.point(v)[0], start.point(v)[0]);
+    EXPECT_EQ(m.point(v)[1], start.point(v)[1]);
+  }
+  EXPECT_LT(max_nearest_distance(m, d.tri), 1e-3 / 8);
 }
 
 }  // namespace

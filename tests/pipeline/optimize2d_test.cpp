@@ -41,8 +41,8 @@ void expect_boundary_kept(const TriMesh2& before, const TriMesh2& after) {
 // the regular mesh from both (so both CVT results coincide).
 TEST(Optimize2d, QuadFromBothPerturbations) {
   const int n = 8;
-  const MeshData d = read_mesh(testing::geo_path("quad.geo"),
-                               {.dim = 2, .set_numbers = {{"Parameters/n", double(n)}}});
+  const MeshData d =
+      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"n", double(n)}}});
   for (Perturbation2d kind : {Perturbation2d::kRandom, Perturbation2d::kCluster}) {
     SCOPED_TRACE(kind == Perturbation2d::kRandom ? "RandPert" : "ClusPert");
     TriMesh2 pert = d.tri;
@@ -82,8 +82,7 @@ TEST(Optimize2d, QuadFromBothPerturbations) {
 TEST(Optimize2d, WasherCvtFromBothPerturbations) {
   const double h0 = 0.16, g = 0.16;
   const MeshData d =
-      read_mesh(testing::geo_path("washer.geo"),
-                {.dim = 2, .set_numbers = {{"Parameters/h0", h0}, {"Parameters/g", g}}});
+      read_mesh(testing::geo_path("washer.geo"), {.dim = 2, .set_numbers = {{"h0", h0}, {"g", g}}});
   double q_avg[2];
   int k = 0;
   for (Perturbation2d kind : {Perturbation2d::kRandom, Perturbation2d::kCluster}) {

@@ -17,8 +17,7 @@ namespace cvtmesh {
 namespace {
 
 TriMesh2 quad(int n) {
-  return read_mesh(testing::geo_path("quad.geo"),
-                   {.dim = 2, .set_numbers = {{"Parameters/n", double(n)}}})
+  return read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"n", double(n)}}})
       .tri;
 }
 
@@ -89,10 +88,9 @@ TEST(Perturb2d, CliWritesMeshAndPicture) {
   const std::string dir = testing::temp_dir();
   const std::string out = dir + "/q.msh", svg = dir + "/q.svg";
   std::string log;
-  const int rc =
-      testing::run(testing::cli_path() + " perturb " + testing::geo_path("quad.geo") +
-                       " --set Parameters/n=6 --random --seed 4 -o " + out + " --svg " + svg,
-                   &log);
+  const int rc = testing::run(testing::cli_path() + " perturb " + testing::geo_path("quad.geo") +
+                                  " --set n=6 --random --seed 4 -o " + out + " --svg " + svg,
+                              &log);
   ASSERT_EQ(rc, 0) << log;
   const MeshData d = read_mesh(out);
   ASSERT_EQ(d.dim, 2);

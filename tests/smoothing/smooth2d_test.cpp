@@ -62,7 +62,7 @@ TEST(Smooth2d, MoveThatWouldInvertIsRejected) {
 // end, converged, and much better than the perturbed mesh.
 TEST(Smooth2d, DlAndWdlOnPerturbedQuad) {
   const MeshData d =
-      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"Parameters/n", 8}}});
+      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"n", 8}}});
   TriMesh2 pert = d.tri;
   perturb_2d(pert, {.kind = Perturbation2d::kRandom, .seed = 5});
   const QualityStats before = quality_stats(pert, "pert");
