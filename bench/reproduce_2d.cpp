@@ -103,7 +103,8 @@ int main(int argc, char** argv) {
   double rand_amount = -1, clus_amount = -1, relaxation = 1;
   int anderson = 0;
   app.add_option("--relaxation", relaxation, "Lloyd over-relaxation (1 = the paper's Lloyd)");
-  app.add_option("--anderson", anderson, "Lloyd Anderson acceleration depth (0 = the paper's Lloyd)");
+  app.add_option("--anderson", anderson,
+                 "Lloyd Anderson acceleration depth (0 = the paper's Lloyd)");
   app.add_option("--random-amount", rand_amount, "RandPert amount (default: perturb_2d's)");
   app.add_option("--cluster-amount", clus_amount, "ClusPert amount (default: perturb_2d's)");
   CLI11_PARSE(app, argc, argv);

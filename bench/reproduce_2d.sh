@@ -10,6 +10,7 @@ OUT=${1:-/tmp/cvtmesh-reproduce-2d}
 mkdir -p "$OUT"
 $B --out docs/img/2d > "$OUT/tables.md"
 $B --examples washer --methods cvt --relaxation 1.5 --anderson 5 > "$OUT/washer_cvt_accelerated.md"
+$B --examples quad --methods cvt --relaxation 1.5 --anderson 5 > "$OUT/quad_cvt_accelerated.md"
 for s in 2 3 4 5; do
   $B --examples washer --methods cvt --seed $s > "$OUT/washer_cvt_seed$s.md"
   $B --examples washer --methods cvt --seed $s --relaxation 1.5 --anderson 5 > "$OUT/washer_cvt_accelerated_seed$s.md"

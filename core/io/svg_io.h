@@ -16,7 +16,8 @@ struct SvgOptions {
   double q_high = 1.0;            // quality mapped to the "best" colour
   bool colour_bar = true;
   std::string title;  // drawn above the mesh if not empty
-  OutputPolicy policy{.force = true, .input_path = {}, .in_place = false};  // replace existing files
+  OutputPolicy policy{
+      .force = true, .input_path = {}, .in_place = false};  // replace existing files
 };
 
 // Writes mesh to path (atomically). Throws OutputError if it cannot be written.
