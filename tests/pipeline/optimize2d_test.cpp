@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 
@@ -104,6 +106,47 @@ TEST(Optimize2d, WasherCvtFromBothPerturbations) {
     q_avg[k++] = r.after.q_avg;
   }
   EXPECT_NEAR(q_avg[0], q_avg[1], 0.01);
+}
+
+// Two surfaces sharing an interface (a rectangle split at x = 1), default "mesh" sizing: every
+// method keeps the interface, both surfaces and their areas (verify_optimized runs inside), and
+// no vertex crosses into the other surface.
+TEST(Optimize2d, TwoSurfacesKeepTheirInterface) {
+  const std::string dir = testing::temp_dir();
+  const std::string geo = dir + "/two.geo";
+  {
+    std::ofstream f(geo);
+    f << "h = 0.1;\n"
+         "Point(1) = {0, 0, 0, h}; Point(2) = {1, 0, 0, h}; Point(3) = {2, 0, 0, h};\n"
+         "Point(4) = {2, 1, 0, h}; Point(5) = {1, 1, 0, h}; Point(6) = {0, 1, 0, h};\n"
+         "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5};\n"
+         "Line(5) = {5, 6}; Line(6) = {6, 1}; Line(7) = {2, 5};\n"
+         "Curve Loop(1) = {1, 7, 5, 6}; Plane Surface(1) = {1};\n"
+         "Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};\n";
+  }
+  const MeshData d = read_mesh(geo, {.dim = 2});
+  ASSERT_EQ(d.dim, 2);
+  TriMesh2 pert = d.tri;
+  perturb_2d(pert, {.kind = Perturbation2d::kRandom, .seed = 9, .amount = 0.45});
+  ASSERT_TRUE(check_mesh(pert).ok);
+  for (const std::string method : {"cvdt", "dl", "wdl"}) {
+    SCOPED_TRACE(method);
+    TriMesh2 m = pert;
+    OptimizeOptions o;
+    o.method = method;
+    o.max_iterations = 200;
+    const OptimizeResult r = optimize_2d(m, o);  // verify = true: throws on a broken invariant
+    EXPECT_GT(r.after.q_min, r.before.q_min);
+    for (int t = 0; t < m.nb_tris(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const double x = m.point(m.tris[3 * t + k])[0];
+        if (m.tri_region[t] == 1)
+          EXPECT_LE(x, 1.0);
+        else
+          EXPECT_GE(x, 1.0);
+      }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Optimize2d, RejectsA3dMethod) {
