@@ -120,11 +120,12 @@ class Lloyd3Problem {
 
     std::vector<double> target(m_.xyz);
     const bool accelerated = o_.anderson_depth > 0;
-    if (accelerated && have_accepted_ && free_ids == accepted_free_ &&
+    if (accelerated && have_accepted_ && !last_was_fallback_ && free_ids == accepted_free_ &&
         s.energy > accepted_energy_ * (1 + 1e-12)) {
       // The accelerated step raised the energy: go back to the last accepted configuration and
       // take the plain (relaxed) Lloyd step from there instead. The energy stays monotone.
       s.restarted = true;
+      last_was_fallback_ = true;
       mixer_.reset();
       target = accepted_xyz_;
       for (std::size_t i = 0; i < accepted_free_.size(); ++i)
@@ -152,6 +153,7 @@ class Lloyd3Problem {
           safe_target(free_ids[i], &mixed[3 * i], star, constrained, &next[3 * i]);
       }
       have_accepted_ = true;
+      last_was_fallback_ = false;
       accepted_energy_ = s.energy;
       accepted_xyz_ = m_.xyz;
       accepted_free_ = free_ids;
@@ -216,6 +218,10 @@ class Lloyd3Problem {
   long nb_dual_ = 0;
   AndersonMixer mixer_{0};
   bool have_accepted_ = false;
+  // The plain step taken after a restart is accepted whatever its energy (the density is P1 on
+  // the current mesh, so the energy is not exactly monotone even for plain Lloyd): no endless
+  // restarts.
+  bool last_was_fallback_ = false;
   double accepted_energy_ = 0;
   std::vector<double> accepted_xyz_, accepted_plain_;
   std::vector<int> accepted_free_;

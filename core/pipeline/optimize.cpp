@@ -94,8 +94,13 @@ void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
 void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   run_cvdt_swap3(mesh, o, r);
   const int lloyd_iterations = r.iterations;
-  OptimizeResult polish;
-  run_combined3(mesh, o, polish);
+  // The polish: guarded Laplacian passes (never lower a star's minimum Q) and flips improving the
+  // minimal dihedral angle that may not lower the minimum Q either.
+  CombinedOptions co;
+  co.max_iterations = o.max_iterations;
+  co.swap.use_guard = true;
+  co.swap.guard_measure = Measure::kQ;
+  combined_optimize(mesh, co, [&](int it, const QualityStats& s) { report(o, "polish", it, 0, 0, s); });
   r.iterations = lloyd_iterations;
 }
 
