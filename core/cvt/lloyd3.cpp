@@ -87,26 +87,37 @@ class Lloyd3Problem {
     const int nv = m_.nb_vertices();
     const VertexStar star = build_vertex_star(m_);
     const std::vector<char> constrained = constrained_face_flags(m_);
-    CellWorkspace ws;
     const double eps = coordinate_eps(m_);
     vertex_density(m_, *sizing_, hints_, H_, rho_);
     const std::vector<double> cc = tet_circumcenters(m_);
-    // Cells of the current configuration: energy, centroids of the free vertices, D.
+    // Cells of the current configuration: energy, centroids of the free vertices, D. The cells are
+    // independent: computed in parallel into per-vertex slots, then reduced in vertex order (the
+    // result does not depend on the number of threads).
+    std::vector<CellIntegrals> cells(nv);
+    std::vector<char> wanted(nv, 0);
+    for (int v = 0; v < nv; ++v) {
+      const bool has_star = star.offset[v] < star.offset[v + 1];
+      wanted[v] = has_star && (m_.vclass[v].dim == 3 || o_.compute_energy);
+    }
+#pragma omp parallel
+    {
+      CellWorkspace local_ws;
+#pragma omp for schedule(dynamic, 64)
+      for (int v = 0; v < nv; ++v) {
+        if (!wanted[v]) continue;
+        if (!dual_voronoi_cell(m_, star, constrained, cc, v, &rho_, cells[v]))
+          cells[v] = restricted_voronoi_cell(m_, star, constrained, v, eps, local_ws, &rho_);
+      }
+    }
     std::vector<int> free_ids;
     std::vector<double> z_free, c_free;
     double dsum = 0;
     for (int v = 0; v < nv; ++v) {
-      const bool free_v = m_.vclass[v].dim == 3 && star.offset[v] < star.offset[v + 1];
-      if (!free_v && !o_.compute_energy) continue;
-      if (star.offset[v] == star.offset[v + 1]) continue;
-      const double* z = m_.point(v);
-      CellIntegrals ci;
-      if (dual_voronoi_cell(m_, star, constrained, cc, v, &rho_, ci))
-        ++nb_dual_;
-      else
-        ci = restricted_voronoi_cell(m_, star, constrained, v, eps, ws, &rho_);
+      if (!wanted[v]) continue;
+      const CellIntegrals& ci = cells[v];
       s.energy += ci.energy;
-      if (!free_v) continue;
+      if (m_.vclass[v].dim != 3) continue;
+      const double* z = m_.point(v);
       ++s.nb_free;
       Vec3 c = ci.centroid(z);
       if (!(ci.mass > 0) || !std::isfinite(c[0] + c[1] + c[2])) c = vec3(z);
@@ -169,7 +180,9 @@ class Lloyd3Problem {
     return s;
   }
 
-  int nb_steiner() const { return nb_steiner_; }
+  int nb_steiner() const {
+    return nb_steiner_;
+  }
 
  private:
   // The move of v towards `goal`, shortened (halved) until the point lies in v's region and is
@@ -215,7 +228,6 @@ class Lloyd3Problem {
   std::vector<int> hints_;
   std::vector<double> H_, rho_;
   int nb_steiner_ = 0;
-  long nb_dual_ = 0;
   AndersonMixer mixer_{0};
   bool have_accepted_ = false;
   // The plain step taken after a restart is accepted whatever its energy (the density is P1 on
