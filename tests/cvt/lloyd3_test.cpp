@@ -183,3 +183,33 @@ TEST(Lloyd3, AndersonAcceleratedAcceptedEnergiesNeverIncrease) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+#include <omp.h>
+
+namespace cvtmesh {
+namespace {
+
+TEST(Lloyd3, SameResultForAnyThreadCount) {
+  ReadOptions ro;
+  ro.gmsh_optimize = false;
+  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
+  const MeshData init = read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  std::vector<TetMesh> results;
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    TetMesh m = init.tet;
+    Lloyd3Options o;
+    o.lloyd.max_iterations = 4;
+    o.anderson_depth = 5;
+    o.relaxation = 1.5;
+    lloyd_optimize_3d(m, o);
+    results.push_back(m);
+  }
+  omp_set_num_threads(saved);
+  EXPECT_EQ(results[0].xyz, results[1].xyz);  // bitwise
+  EXPECT_EQ(results[0].tets, results[1].tets);
+}
+
+}  // namespace
+}  // namespace cvtmesh
