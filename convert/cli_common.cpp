@@ -13,7 +13,8 @@ ReadOptions InputOpts::to_read_options() const {
   r.mesh_size_factor = size_factor;
   for (const auto& s : set_numbers) {
     const auto eq = s.find('=');
-    if (eq == std::string::npos) throw CLI::ValidationError("--set", "expected NAME=VALUE, got '" + s + "'");
+    if (eq == std::string::npos)
+      throw CLI::ValidationError("--set", "expected NAME=VALUE, got '" + s + "'");
     try {
       r.set_numbers.push_back({s.substr(0, eq), std::stod(s.substr(eq + 1))});
     } catch (const std::exception&) {
@@ -24,10 +25,13 @@ ReadOptions InputOpts::to_read_options() const {
 }
 
 void add_input(CLI::App* c, InputOpts& in) {
-  c->add_option("input", in.path, "input mesh or model (.msh, .geo, .stl, .mesh, .node, ...)")->required();
-  c->add_option("--dim", in.dim, "read as a 2D (triangles) or 3D (tetrahedra) mesh; default: highest present")
+  c->add_option("input", in.path, "input mesh or model (.msh, .geo, .stl, .mesh, .node, ...)")
+      ->required();
+  c->add_option("--dim", in.dim,
+                "read as a 2D (triangles) or 3D (tetrahedra) mesh; default: highest present")
       ->check(CLI::IsMember({-1, 2, 3}));
-  c->add_option("--set", in.set_numbers, "NAME=VALUE: set a .geo parameter before meshing (like gmsh -setnumber)");
+  c->add_option("--set", in.set_numbers,
+                "NAME=VALUE: set a .geo parameter before meshing (like gmsh -setnumber)");
   c->add_option("--size-factor", in.size_factor, "Gmsh Mesh.MeshSizeFactor when a model is meshed");
 }
 
@@ -43,11 +47,13 @@ WriteOptions OutputOpts::to_write_options(const MeshData& d, const std::string& 
 }
 
 void add_output_flags(CLI::App* c, OutputOpts& o) {
-  c->add_flag("--quality", o.quality, "store per-element quality (Q, radius ratio, min angle) as element data");
+  c->add_flag("--quality", o.quality,
+              "store per-element quality (Q, radius ratio, min angle) as element data");
   c->add_option("--msh-version", o.msh_version, "version of a .msh output: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({4.1, 2.2}));
   c->add_flag("--binary", o.binary, "binary .msh output");
-  c->add_flag("--no-clobber", o.no_clobber, "refuse to replace an existing output file (default: replace it, like gmsh -o)");
+  c->add_flag("--no-clobber", o.no_clobber,
+              "refuse to replace an existing output file (default: replace it, like gmsh -o)");
   c->add_flag("--in-place", o.in_place, "allow the output to be the input file itself");
 }
 

@@ -47,5 +47,6 @@ std::string render(const QualityTable& t, const std::string& format);
 // One register function per subcommand (convert/cmd_<name>.cpp).
 void register_stats(CLI::App& app);
 void register_convert(CLI::App& app);
+void register_optimize(CLI::App& app);
 
 }  // namespace cvtmesh::cli

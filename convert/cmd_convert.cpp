@@ -9,9 +9,12 @@ namespace cvtmesh::cli {
 void register_convert(CLI::App& app) {
   auto in = std::make_shared<InputOpts>();
   auto out = std::make_shared<OutputOpts>();
-  CLI::App* c = app.add_subcommand("convert", "convert a mesh between formats (by extension), optionally with quality data");
+  CLI::App* c = app.add_subcommand(
+      "convert", "convert a mesh between formats (by extension), optionally with quality data");
   add_input(c, *in);
-  c->add_option("output", out->path, "output file; format by extension: " + supported_write_formats())->required();
+  c->add_option("output", out->path,
+                "output file; format by extension: " + supported_write_formats())
+      ->required();
   add_output_flags(c, *out);
   commands().push_back({c, [in, out] {
                           const MeshData d = read_mesh(in->path, in->to_read_options());

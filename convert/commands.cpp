@@ -9,6 +9,7 @@ namespace cvtmesh::cli {
 void register_commands(CLI::App& app) {
   register_stats(app);
   register_convert(app);
+  register_optimize(app);
 }
 
 int run_selected(CLI::App& app) {

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
     std::cerr << "cvtmesh: error: " << e.what() << "\n";
     return 3;
   } catch (const cvtmesh::InvariantError& e) {
-    std::cerr << "cvtmesh: internal error (mesh invariant violated, nothing written): " << e.what() << "\n";
+    std::cerr << "cvtmesh: internal error (mesh invariant violated, nothing written): " << e.what()
+              << "\n";
     return 4;
   } catch (const std::exception& e) {
     std::cerr << "cvtmesh: error: " << e.what() << "\n";

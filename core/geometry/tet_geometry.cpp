@@ -12,8 +12,9 @@ double tet_volume(const double* a, const double* b, const double* c, const doubl
 Vec3 tet_circumcenter(const double* a, const double* b, const double* c, const double* d) {
   const Vec3 u = sub(b, a), v = sub(c, a), w = sub(d, a);
   const double det = 2.0 * dot(u, cross(v, w));
-  if (det == 0.0) return {(a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
-                          (a[2] + b[2] + c[2] + d[2]) / 4};
+  if (det == 0.0)
+    return {(a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
+            (a[2] + b[2] + c[2] + d[2]) / 4};
   const Vec3 r = (norm2(u) * cross(v, w) + norm2(v) * cross(w, u)) + norm2(w) * cross(u, v);
   return {a[0] + r[0] / det, a[1] + r[1] / det, a[2] + r[2] / det};
 }
@@ -24,8 +25,8 @@ double tet_circumradius(const double* a, const double* b, const double* c, const
 }
 
 double tet_inradius(const double* a, const double* b, const double* c, const double* d) {
-  const double area = tri_area3d(b, c, d) + tri_area3d(a, c, d) + tri_area3d(a, b, d) +
-                      tri_area3d(a, b, c);
+  const double area =
+      tri_area3d(b, c, d) + tri_area3d(a, c, d) + tri_area3d(a, b, d) + tri_area3d(a, b, c);
   if (area == 0.0) return 0.0;
   return 3.0 * std::fabs(tet_volume(a, b, c, d)) / area;
 }
@@ -105,7 +106,8 @@ Vec3 tri_circumcenter3d(const double* a, const double* b, const double* c) {
   const Vec3 u = sub(b, a), v = sub(c, a);
   const Vec3 w = cross(u, v);
   const double d = 2.0 * norm2(w);
-  if (d == 0.0) return {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
+  if (d == 0.0)
+    return {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
   const Vec3 r = (1.0 / d) * (norm2(u) * cross(v, w) + norm2(v) * cross(w, u));
   return {a[0] + r[0], a[1] + r[1], a[2] + r[2]};
 }

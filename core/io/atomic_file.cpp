@@ -33,8 +33,9 @@ AtomicFile::AtomicFile(const std::string& target) : target_(target) {
   std::random_device rd;
   char buf[32];
   std::snprintf(buf, sizeof buf, "%08x", rd());
-  temp_ = (fs::path(dir) / ("." + p.stem().string() + ".cvtmesh-tmp-" + buf + p.extension().string()))
-              .string();
+  temp_ =
+      (fs::path(dir) / ("." + p.stem().string() + ".cvtmesh-tmp-" + buf + p.extension().string()))
+          .string();
 }
 
 AtomicFile::~AtomicFile() {

@@ -27,8 +27,8 @@ class AtomicFile {
 
 // Options shared by every writer.
 struct OutputPolicy {
-  bool force = false;        // allow replacing an existing output file
-  std::string input_path;    // refuse to write over this file unless in_place
+  bool force = false;      // allow replacing an existing output file
+  std::string input_path;  // refuse to write over this file unless in_place
   bool in_place = false;
 };
 

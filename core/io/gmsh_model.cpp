@@ -55,7 +55,11 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     }
     if (max_dim < 0) throw InputError(what + " has no mesh elements (empty mesh)");
     if (dim < 0) dim = max_dim;
-    if (dim != 2 && dim != 3) throw InputError(what + ": only 2D triangle and 3D tetrahedral meshes are supported (highest element dimension is " + std::to_string(max_dim) + ")");
+    if (dim != 2 && dim != 3)
+      throw InputError(what +
+                       ": only 2D triangle and 3D tetrahedral meshes are supported (highest "
+                       "element dimension is " +
+                       std::to_string(max_dim) + ")");
     if (max_dim < dim) throw InputError(what + " has no " + std::to_string(dim) + "D elements");
     out.dim = dim;
 
@@ -96,7 +100,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       for (int k = 0; k < 3; ++k) {
         xyz[3 * i + k] = all_xyz[3 * i + k];
         if (!std::isfinite(all_xyz[3 * i + k]))
-          throw InputError(what + ": node " + std::to_string(all_tags[i]) + " has a NaN or infinite coordinate");
+          throw InputError(what + ": node " + std::to_string(all_tags[i]) +
+                           " has a NaN or infinite coordinate");
       }
       vclass[i].dim = static_cast<std::int8_t>(dim);
     }
@@ -114,7 +119,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     auto vid = [&](std::size_t tag) {
       auto it = index.find(tag);
       if (it == index.end())
-        throw InputError(what + ": an element references node " + std::to_string(tag) + ", which does not exist");
+        throw InputError(what + ": an element references node " + std::to_string(tag) +
+                         ", which does not exist");
       return it->second;
     };
 
@@ -134,7 +140,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           if (type != want)
             throw InputError(what + ": unsupported element type '" + type_name(type) + "' in " +
                              (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
-                             " (cvtmesh optimizes linear " + (dim == 3 ? "tetrahedra" : "triangles") + " only)");
+                             " (cvtmesh optimizes linear " +
+                             (dim == 3 ? "tetrahedra" : "triangles") + " only)");
           const int npe = dim + 1;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) cells.push_back(vid(nd[npe * e + j]));
@@ -155,8 +162,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           }
         } else if (d < dim - 1) {
           if (type != 15 && type != 1)
-            throw InputError(what + ": unsupported element type '" + type_name(type) + "' on entity (" +
-                             std::to_string(d) + "," + std::to_string(t) + ")");
+            throw InputError(what + ": unsupported element type '" + type_name(type) +
+                             "' on entity (" + std::to_string(d) + "," + std::to_string(t) + ")");
           ElementBlock b;
           b.dim = d;
           b.entity = t;
@@ -170,7 +177,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         }
       }
     }
-    if (cells.empty()) throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") + " (empty mesh)");
+    if (cells.empty())
+      throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") +
+                       " (empty mesh)");
 
     if (dim == 3) {
       TetMesh& m = out.tet;
@@ -194,7 +203,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         }
       }
       if (bad)
-        throw InputError(what + ": " + std::to_string(bad) + " tetrahedra are inverted or flat (first: element " +
+        throw InputError(what + ": " + std::to_string(bad) +
+                         " tetrahedra are inverted or flat (first: element " +
                          std::to_string(first_bad) + ")");
       build_adjacency(m);
       const MeshCheck c = check_mesh(m);
@@ -210,8 +220,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         extent = std::max({extent, std::fabs(xyz[3 * i]), std::fabs(xyz[3 * i + 1])});
       }
       if (zmax - zmin > 1e-10 * std::max(1.0, extent))
-        throw InputError(what + ": the triangle mesh is not planar (z varies from " + std::to_string(zmin) +
-                         " to " + std::to_string(zmax) + "); 2D optimization needs a mesh in a plane z = const");
+        throw InputError(what + ": the triangle mesh is not planar (z varies from " +
+                         std::to_string(zmin) + " to " + std::to_string(zmax) +
+                         "); 2D optimization needs a mesh in a plane z = const");
       m.z0 = n ? zmin : 0;
       m.xy.resize(2 * n);
       for (std::size_t i = 0; i < n; ++i) {
@@ -232,13 +243,18 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       for (int t = 0; t < m.nb_tris(); ++t) {
         const int* v = &m.tris[3 * t];
         const double o = orient2d(m.point(v[0]), m.point(v[1]), m.point(v[2]));
-        if (o > 0) ++sign[m.tri_region[t]].first;
-        else if (o < 0) ++sign[m.tri_region[t]].second;
-        else throw InputError(what + ": triangle " + std::to_string(m.tri_tags[t]) + " is flat (zero area)");
+        if (o > 0)
+          ++sign[m.tri_region[t]].first;
+        else if (o < 0)
+          ++sign[m.tri_region[t]].second;
+        else
+          throw InputError(what + ": triangle " + std::to_string(m.tri_tags[t]) +
+                           " is flat (zero area)");
       }
       for (const auto& [s, c] : sign) {
         if (c.first && c.second)
-          throw InputError(what + ": surface " + std::to_string(s) + " has " + std::to_string(std::min(c.first, c.second)) +
+          throw InputError(what + ": surface " + std::to_string(s) + " has " +
+                           std::to_string(std::min(c.first, c.second)) +
                            " inverted triangles (mixed orientation)");
         if (c.second) m.cw_surfaces.push_back(s);
       }
@@ -264,7 +280,8 @@ void complete_model_info(MeshData& data) {
     TetMesh& m = data.tet;
     for (int r : m.tet_region) ensure(3, r);
     for (int s : m.tri_surface) ensure(2, s);
-    if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices())) m.vclass.assign(m.nb_vertices(), {3, 0});
+    if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices()))
+      m.vclass.assign(m.nb_vertices(), {3, 0});
     for (int f = 0; f < m.nb_tris(); ++f)
       for (int k = 0; k < 3; ++k) {
         VertexClass& c = m.vclass[m.tris[3 * f + k]];
@@ -284,7 +301,8 @@ void complete_model_info(MeshData& data) {
     TriMesh2& m = data.tri;
     for (int r : m.tri_region) ensure(2, r);
     for (int c : m.edge_curve) ensure(1, c);
-    if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices())) m.vclass.assign(m.nb_vertices(), {2, 0});
+    if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices()))
+      m.vclass.assign(m.nb_vertices(), {2, 0});
     for (int e = 0; e < m.nb_edges(); ++e)
       for (int k = 0; k < 2; ++k) {
         VertexClass& c = m.vclass[m.edges[2 * e + k]];
@@ -312,10 +330,12 @@ namespace {
 std::vector<std::size_t> node_tags_for(const std::vector<std::size_t>& original, int nv) {
   std::vector<std::size_t> tags(nv, 0);
   std::size_t next = 1;
-  for (int i = 0; i < nv && i < static_cast<int>(original.size()); ++i) next = std::max(next, original[i] + 1);
+  for (int i = 0; i < nv && i < static_cast<int>(original.size()); ++i)
+    next = std::max(next, original[i] + 1);
   std::set<std::size_t> used;
   for (int i = 0; i < nv; ++i) {
-    if (i < static_cast<int>(original.size()) && original[i] != 0 && used.insert(original[i]).second)
+    if (i < static_cast<int>(original.size()) && original[i] != 0 &&
+        used.insert(original[i]).second)
       tags[i] = original[i];
     else
       tags[i] = next++;
@@ -339,7 +359,8 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
   const int nv = dim == 3 ? data.tet.nb_vertices() : data.tri.nb_vertices();
   const auto& vclass = dim == 3 ? data.tet.vclass : data.tri.vclass;
   const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv);
-  std::map<std::pair<int, int>, std::pair<std::vector<std::size_t>, std::vector<double>>> per_entity;
+  std::map<std::pair<int, int>, std::pair<std::vector<std::size_t>, std::vector<double>>>
+      per_entity;
   for (int i = 0; i < nv; ++i) {
     auto& [tags, xyz] = per_entity[{vclass[i].dim, vclass[i].entity}];
     tags.push_back(ntags[i]);
@@ -351,7 +372,8 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
       xyz.insert(xyz.end(), {p[0], p[1], data.tri.z0});
     }
   }
-  for (const auto& [key, v] : per_entity) gmsh::model::mesh::addNodes(key.first, key.second, v.first, v.second);
+  for (const auto& [key, v] : per_entity)
+    gmsh::model::mesh::addNodes(key.first, key.second, v.first, v.second);
 
   // Element tags: keep the original ones where they are unique, fresh ones otherwise.
   std::size_t next = 1;
@@ -368,12 +390,14 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
   }
   std::set<std::size_t> used;
   auto tag_for = [&](const std::vector<std::size_t>& orig, int i) {
-    if (i < static_cast<int>(orig.size()) && orig[i] != 0 && used.insert(orig[i]).second) return orig[i];
+    if (i < static_cast<int>(orig.size()) && orig[i] != 0 && used.insert(orig[i]).second)
+      return orig[i];
     return next++;
   };
   for (const auto& b : info.extra) {
     std::vector<std::size_t> tg, nd;
-    for (std::size_t e = 0; e < b.tags.size(); ++e) tg.push_back(tag_for(b.tags, static_cast<int>(e)));
+    for (std::size_t e = 0; e < b.tags.size(); ++e)
+      tg.push_back(tag_for(b.tags, static_cast<int>(e)));
     for (int n : b.nodes) nd.push_back(ntags[n]);
     gmsh::model::mesh::addElementsByType(b.entity, b.gmsh_type, tg, nd);
   }
@@ -396,7 +420,8 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
       }
       if (main) w.element_tags.push_back(tag);
     }
-    for (const auto& [ent, b] : blocks) gmsh::model::mesh::addElementsByType(ent, type, b.first, b.second);
+    for (const auto& [ent, b] : blocks)
+      gmsh::model::mesh::addElementsByType(ent, type, b.first, b.second);
   };
   if (dim == 3) {
     add_simplices(data.tet.tris, 3, data.tet.tri_surface, data.tet.tri_tags, 2, false, nullptr);

@@ -9,7 +9,7 @@
 namespace cvtmesh {
 
 struct MeshData {
-  int dim = 0;   // 3: tet is used; 2: tri is used
+  int dim = 0;  // 3: tet is used; 2: tri is used
   TetMesh tet;
   TriMesh2 tri;
 

@@ -28,7 +28,8 @@ void check_readable(const std::string& path) {
   if (stat(path.c_str(), &st) != 0) throw InputError("cannot read '" + path + "': no such file");
   if (S_ISDIR(st.st_mode)) throw InputError("cannot read '" + path + "': it is a directory");
   if (!S_ISREG(st.st_mode)) throw InputError("cannot read '" + path + "': not a regular file");
-  if (access(path.c_str(), R_OK) != 0) throw InputError("cannot read '" + path + "': permission denied");
+  if (access(path.c_str(), R_OK) != 0)
+    throw InputError("cannot read '" + path + "': permission denied");
   if (st.st_size == 0) throw InputError("cannot read '" + path + "': the file is empty");
 }
 
@@ -68,7 +69,8 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
       gmsh::option::setNumber("Mesh.Optimize", 0);
       gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
     }
-    if (options.mesh_size_factor > 0) gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
+    if (options.mesh_size_factor > 0)
+      gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
     gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
     int model_dim = gmsh::model::getDimension();
     gmsh::vectorpair ents;

@@ -11,10 +11,10 @@
 namespace cvtmesh {
 
 struct ReadOptions {
-  int dim = -1;                // 2, 3, or -1: the highest dimension present / the model's
-  bool gmsh_optimize = true;   // when Gmsh meshes a model: run its default optimizer (Mesh.Optimize)
-  double mesh_size_factor = 0; // >0: Mesh.MeshSizeFactor for models meshed by Gmsh
-  int seed = 0;                // Mesh.RandomSeed (reproducible meshing)
+  int dim = -1;               // 2, 3, or -1: the highest dimension present / the model's
+  bool gmsh_optimize = true;  // when Gmsh meshes a model: run its default optimizer (Mesh.Optimize)
+  double mesh_size_factor = 0;  // >0: Mesh.MeshSizeFactor for models meshed by Gmsh
+  int seed = 0;                 // Mesh.RandomSeed (reproducible meshing)
   // Numbers set before a .geo is parsed (like gmsh -setnumber NAME VALUE), e.g. {"h", 0.1}.
   std::vector<std::pair<std::string, double>> set_numbers;
 };

@@ -13,7 +13,8 @@ namespace {
 
 // Formats Gmsh writes from a mesh (besides .msh).
 bool gmsh_writes(const std::string& ext) {
-  static const char* k[] = {".msh", ".unv", ".inp", ".bdf", ".p3d", ".diff", ".ir3", ".mail", ".su2", ".wrl", ".x3d", ".celum", ".off"};
+  static const char* k[] = {".msh",  ".unv", ".inp", ".bdf", ".p3d",   ".diff", ".ir3",
+                            ".mail", ".su2", ".wrl", ".x3d", ".celum", ".off"};
   for (const char* e : k)
     if (ext == e) return true;
   return false;
@@ -62,13 +63,15 @@ std::string supported_write_formats() {
 
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
   const std::string ext = file_extension(path);
-  if (ext.empty()) throw OutputError("cannot write '" + path + "': no file extension to choose the format from");
+  if (ext.empty())
+    throw OutputError("cannot write '" + path + "': no file extension to choose the format from");
   const MeshWriter* own = find_writer(ext);
   if (!own && !gmsh_writes(ext))
     throw OutputError("cannot write '" + path + "': unknown output format '" + ext +
                       "' (supported: " + supported_write_formats() + ")");
   if (options.msh_version != 4.1 && options.msh_version != 2.2)
-    throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) + " (use 4.1 or 2.2)");
+    throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) +
+                      " (use 4.1 or 2.2)");
   check_output_allowed(path, options.policy);
   AtomicFile out(path);
   if (own)

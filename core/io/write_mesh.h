@@ -11,9 +11,9 @@
 namespace cvtmesh {
 
 struct WriteOptions {
-  double msh_version = 4.1;            // 4.1 or 2.2
-  bool binary = false;                 // binary .msh
-  std::vector<ElementField> fields;    // per-element data ($ElementData / VTK cell data)
+  double msh_version = 4.1;          // 4.1 or 2.2
+  bool binary = false;               // binary .msh
+  std::vector<ElementField> fields;  // per-element data ($ElementData / VTK cell data)
   OutputPolicy policy;
 };
 

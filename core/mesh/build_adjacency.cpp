@@ -39,9 +39,10 @@ void build_adjacency(TetMesh& mesh) {
            recs[j].c == recs[i].c)
       ++j;
     if (j - i > 2)
-      throw InputError("non-manifold volume mesh: a triangle (vertices " + std::to_string(recs[i].a) +
-                       ", " + std::to_string(recs[i].b) + ", " + std::to_string(recs[i].c) +
-                       ") is shared by " + std::to_string(j - i) + " tetrahedra");
+      throw InputError("non-manifold volume mesh: a triangle (vertices " +
+                       std::to_string(recs[i].a) + ", " + std::to_string(recs[i].b) + ", " +
+                       std::to_string(recs[i].c) + ") is shared by " + std::to_string(j - i) +
+                       " tetrahedra");
     if (j - i == 2) {
       mesh.adj[recs[i].slot] = recs[i + 1].slot;
       mesh.adj[recs[i + 1].slot] = recs[i].slot;

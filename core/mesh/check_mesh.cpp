@@ -21,7 +21,8 @@ MeshCheck check_mesh(const TetMesh& m) {
   MeshCheck r;
   const int nv = m.nb_vertices(), nt = m.nb_tets();
   if (static_cast<int>(m.tet_region.size()) != nt) problem(r, "tet_region size differs from #T");
-  if (static_cast<int>(m.tri_surface.size()) != m.nb_tris()) problem(r, "tri_surface size differs from #F");
+  if (static_cast<int>(m.tri_surface.size()) != m.nb_tris())
+    problem(r, "tri_surface size differs from #F");
   if (static_cast<int>(m.vclass.size()) != nv) problem(r, "vclass size differs from #V");
   if (m.adj.size() != m.tets.size()) {
     problem(r, "adjacency not built (adj size differs from 4*#T)");

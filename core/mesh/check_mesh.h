@@ -14,8 +14,8 @@ struct MeshCheck {
   std::vector<std::string> problems;  // human-readable, at most a few dozen
   int nb_inverted = 0;                // elements with non-positive orientation (exact predicate)
   int nb_bad_adjacency = 0;
-  int nb_open_faces = 0;              // boundary faces of the volume not covered by a constrained face
-  int nb_dangling_constraints = 0;    // constrained faces that are not faces of any live element
+  int nb_open_faces = 0;  // boundary faces of the volume not covered by a constrained face
+  int nb_dangling_constraints = 0;  // constrained faces that are not faces of any live element
 };
 
 // Checks a tet mesh: vertex ids in range, no dead tet referenced, adjacency symmetric and

@@ -15,7 +15,9 @@ inline FaceKey face_key(int a, int b, int c) {
   std::sort(k.begin(), k.end());
   return k;
 }
-inline EdgeKey edge_key(int a, int b) { return a < b ? EdgeKey{a, b} : EdgeKey{b, a}; }
+inline EdgeKey edge_key(int a, int b) {
+  return a < b ? EdgeKey{a, b} : EdgeKey{b, a};
+}
 
 struct FaceKeyHash {
   std::size_t operator()(const FaceKey& k) const {

@@ -25,9 +25,9 @@ struct PhysicalGroup {
 struct ElementBlock {
   int dim = 0;
   int entity = 0;
-  int gmsh_type = 0;                  // Gmsh element type (15 = point, 1 = line, 2 = tri, 4 = tet)
-  std::vector<std::size_t> tags;      // Gmsh element tags, #E
-  std::vector<int> nodes;             // #E * nodes-per-element, 0-based vertex ids
+  int gmsh_type = 0;              // Gmsh element type (15 = point, 1 = line, 2 = tri, 4 = tet)
+  std::vector<std::size_t> tags;  // Gmsh element tags, #E
+  std::vector<int> nodes;         // #E * nodes-per-element, 0-based vertex ids
 };
 
 struct ModelInfo {
@@ -35,7 +35,7 @@ struct ModelInfo {
   std::string source;                 // path of the file it came from ("" if built in memory)
   std::vector<ModelEntity> entities;  // all entities, every dimension
   std::vector<PhysicalGroup> groups;
-  std::vector<ElementBlock> extra;    // elements of dimension < mesh dimension - 1
+  std::vector<ElementBlock> extra;  // elements of dimension < mesh dimension - 1
 };
 
 }  // namespace cvtmesh

@@ -11,23 +11,23 @@
 namespace cvtmesh {
 
 struct OptimizeProgress {
-  std::string phase;      // "lloyd", "swap", "smooth", "combined", ...
+  std::string phase;  // "lloyd", "swap", "smooth", "combined", ...
   int iteration = 0;
-  double D = 0;           // Lloyd displacement (normalised), 0 if not applicable
-  double energy = 0;      // CVT energy, 0 if not applicable
+  double D = 0;       // Lloyd displacement (normalised), 0 if not applicable
+  double energy = 0;  // CVT energy, 0 if not applicable
   double q_min = 0, q_avg = 0;
 };
 
 struct OptimizeOptions {
   std::string method = "cvdt+swap";
-  int max_iterations = 100;   // Lloyd / outer iterations
-  double tolerance = 1e-5;    // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
+  int max_iterations = 100;  // Lloyd / outer iterations
+  double tolerance = 1e-5;   // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";
   std::function<double(const double* x)> size_function;  // x has d coordinates
   unsigned seed = 0;
-  bool verify = true;          // run the invariant checks at the end (throws InvariantError)
+  bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   std::function<void(const OptimizeProgress&)> progress;
 };
 

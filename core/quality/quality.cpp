@@ -12,7 +12,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 
-double sgn(double v) { return v < 0 ? -1.0 : 1.0; }
+double sgn(double v) {
+  return v < 0 ? -1.0 : 1.0;
+}
 
 // Gmsh's ICN for a linear simplex: 1/condition number of the Jacobian of the map from the
 // regular simplex, i.e. d / (||J||_F ||J^-1||_F), signed by det J.
@@ -84,11 +86,16 @@ Measure measure_from_string(const std::string& name) {
 
 std::string measure_name(Measure m) {
   switch (m) {
-    case Measure::kQ: return "q";
-    case Measure::kRadiusRatio: return "radius-ratio";
-    case Measure::kMinAngle: return "min-angle";
-    case Measure::kMaxAngle: return "max-angle";
-    case Measure::kGmshIcn: return "icn";
+    case Measure::kQ:
+      return "q";
+    case Measure::kRadiusRatio:
+      return "radius-ratio";
+    case Measure::kMinAngle:
+      return "min-angle";
+    case Measure::kMaxAngle:
+      return "max-angle";
+    case Measure::kGmshIcn:
+      return "icn";
   }
   return "?";
 }
@@ -116,7 +123,8 @@ double tet_quality(const double* a, const double* b, const double* c, const doub
       const auto ang = tet_dihedral_angles(a, b, c, d);
       return *std::max_element(ang.begin(), ang.end()) * kDeg;
     }
-    case Measure::kGmshIcn: return tet_icn(a, b, c, d);
+    case Measure::kGmshIcn:
+      return tet_icn(a, b, c, d);
   }
   return 0;
 }

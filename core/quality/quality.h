@@ -7,11 +7,11 @@
 namespace cvtmesh {
 
 enum class Measure {
-  kQ,             // tet: 72*sqrt(3)*V/(sum L^2)^(3/2); tri: 4*sqrt(3)*A/sum L^2 (the paper's). 1 = regular
-  kRadiusRatio,   // tet: 3r/R; tri: 2r/R. 1 = regular. (Gmsh 4.8's "gamma" for tets.)
-  kMinAngle,      // tet: minimum dihedral angle; tri: minimum angle. Degrees.
-  kMaxAngle,      // tet: maximum dihedral angle; tri: maximum angle. Degrees.
-  kGmshIcn,       // Gmsh's inverse condition number (Plugin(AnalyseMeshQuality) ICNMeasure)
+  kQ,  // tet: 72*sqrt(3)*V/(sum L^2)^(3/2); tri: 4*sqrt(3)*A/sum L^2 (the paper's). 1 = regular
+  kRadiusRatio,  // tet: 3r/R; tri: 2r/R. 1 = regular. (Gmsh 4.8's "gamma" for tets.)
+  kMinAngle,     // tet: minimum dihedral angle; tri: minimum angle. Degrees.
+  kMaxAngle,     // tet: maximum dihedral angle; tri: maximum angle. Degrees.
+  kGmshIcn,      // Gmsh's inverse condition number (Plugin(AnalyseMeshQuality) ICNMeasure)
 };
 
 // Parses "q", "radius-ratio", "min-angle", "max-angle", "icn"; throws std::invalid_argument.

@@ -11,8 +11,8 @@ std::vector<double> element_qualities(const TetMesh& mesh, Measure m) {
   for (int t = 0; t < mesh.nb_tets(); ++t) {
     const int* v = &mesh.tets[4 * t];
     if (v[0] < 0) continue;
-    q.push_back(tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                            mesh.point(v[3]), m));
+    q.push_back(
+        tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), m));
   }
   return q;
 }
@@ -45,11 +45,16 @@ QualityStats quality_stats_from_values(const std::vector<double>& q, const std::
     sum += v;
     s.q_min = std::min(s.q_min, v);
     s.q_max = std::max(s.q_max, v);
-    if (v > 0.7) ++s.bin[0];
-    else if (v > 0.5) ++s.bin[1];
-    else if (v > 0.3) ++s.bin[2];
-    else if (v > 0) ++s.bin[3];
-    else ++s.nb_inverted;
+    if (v > 0.7)
+      ++s.bin[0];
+    else if (v > 0.5)
+      ++s.bin[1];
+    else if (v > 0.3)
+      ++s.bin[2];
+    else if (v > 0)
+      ++s.bin[3];
+    else
+      ++s.nb_inverted;
     if (v < 0.3) ++bad;
     if (v > 0.5) ++good;
   }
@@ -65,17 +70,17 @@ QualityStats quality_stats_from_values(const std::vector<double>& q, const std::
 }
 
 QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
-  return quality_stats_from_values(
-      element_qualities(mesh, Measure::kQ), element_qualities(mesh, Measure::kRadiusRatio),
-      element_qualities(mesh, Measure::kMinAngle), element_qualities(mesh, Measure::kMaxAngle), 3,
-      label);
+  return quality_stats_from_values(element_qualities(mesh, Measure::kQ),
+                                   element_qualities(mesh, Measure::kRadiusRatio),
+                                   element_qualities(mesh, Measure::kMinAngle),
+                                   element_qualities(mesh, Measure::kMaxAngle), 3, label);
 }
 
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {
-  return quality_stats_from_values(
-      element_qualities(mesh, Measure::kQ), element_qualities(mesh, Measure::kRadiusRatio),
-      element_qualities(mesh, Measure::kMinAngle), element_qualities(mesh, Measure::kMaxAngle), 2,
-      label);
+  return quality_stats_from_values(element_qualities(mesh, Measure::kQ),
+                                   element_qualities(mesh, Measure::kRadiusRatio),
+                                   element_qualities(mesh, Measure::kMinAngle),
+                                   element_qualities(mesh, Measure::kMaxAngle), 2, label);
 }
 
 }  // namespace cvtmesh

@@ -18,9 +18,9 @@ struct QualityStats {
   long bin[4] = {0, 0, 0, 0};
   long nb_inverted = 0;
   double q_min = 0, q_max = 0, q_avg = 0;
-  double bad_pct = 0;   // Q < 0.3, percent of all elements
-  double good_pct = 0;  // Q > 0.5, percent of all elements
-  double min_angle = 0; // degrees: dihedral (3D) or planar (2D)
+  double bad_pct = 0;    // Q < 0.3, percent of all elements
+  double good_pct = 0;   // Q > 0.5, percent of all elements
+  double min_angle = 0;  // degrees: dihedral (3D) or planar (2D)
   double max_angle = 0;
   double avg_radius_ratio = 0;
   // Extra rows (e.g. {"iterations", 42}, {"seconds", 1.3}), shown in insertion order.

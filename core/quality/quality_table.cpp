@@ -18,7 +18,9 @@ std::string fmt(const char* f, double v) {
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
-std::string count(long v) { return std::to_string(v); }
+std::string count(long v) {
+  return std::to_string(v);
+}
 
 // The rows, in the paper's order. 3D: Table 6/7 plus dihedral angles and radius ratio.
 // 2D: Tables 1-5 (average quality, minimum quality, minimum angle, maximum angle).
@@ -27,28 +29,37 @@ std::vector<Row> rows_for(const std::vector<QualityStats>& cols) {
   bool any_inverted = false;
   for (const auto& c : cols) any_inverted |= c.nb_inverted > 0;
   std::vector<Row> rows;
-  rows.push_back({"number of elements", [](const QualityStats& s) { return count(s.nb_elements); }});
+  rows.push_back(
+      {"number of elements", [](const QualityStats& s) { return count(s.nb_elements); }});
   if (three_d) {
     rows.push_back({"0.7 < Q <= 1.0", [](const QualityStats& s) { return count(s.bin[0]); }});
     rows.push_back({"0.5 < Q <= 0.7", [](const QualityStats& s) { return count(s.bin[1]); }});
     rows.push_back({"0.3 < Q <= 0.5", [](const QualityStats& s) { return count(s.bin[2]); }});
     rows.push_back({"0.0 < Q <= 0.3", [](const QualityStats& s) { return count(s.bin[3]); }});
     if (any_inverted)
-      rows.push_back({"Q <= 0 (inverted/flat)", [](const QualityStats& s) { return count(s.nb_inverted); }});
+      rows.push_back(
+          {"Q <= 0 (inverted/flat)", [](const QualityStats& s) { return count(s.nb_inverted); }});
     rows.push_back({"Q_min", [](const QualityStats& s) { return fmt("%.4f", s.q_min); }});
-    rows.push_back({"bad elements (%)", [](const QualityStats& s) { return fmt("%.2f", s.bad_pct); }});
-    rows.push_back({"good elements (%)", [](const QualityStats& s) { return fmt("%.2f", s.good_pct); }});
+    rows.push_back(
+        {"bad elements (%)", [](const QualityStats& s) { return fmt("%.2f", s.bad_pct); }});
+    rows.push_back(
+        {"good elements (%)", [](const QualityStats& s) { return fmt("%.2f", s.good_pct); }});
     rows.push_back({"average quality", [](const QualityStats& s) { return fmt("%.4f", s.q_avg); }});
-    rows.push_back({"min dihedral angle", [](const QualityStats& s) { return fmt("%.2f", s.min_angle); }});
-    rows.push_back({"max dihedral angle", [](const QualityStats& s) { return fmt("%.2f", s.max_angle); }});
-    rows.push_back({"average radius ratio", [](const QualityStats& s) { return fmt("%.4f", s.avg_radius_ratio); }});
+    rows.push_back(
+        {"min dihedral angle", [](const QualityStats& s) { return fmt("%.2f", s.min_angle); }});
+    rows.push_back(
+        {"max dihedral angle", [](const QualityStats& s) { return fmt("%.2f", s.max_angle); }});
+    rows.push_back({"average radius ratio",
+                    [](const QualityStats& s) { return fmt("%.4f", s.avg_radius_ratio); }});
   } else {
     if (any_inverted)
       rows.push_back({"inverted/flat", [](const QualityStats& s) { return count(s.nb_inverted); }});
     rows.push_back({"average quality", [](const QualityStats& s) { return fmt("%.4f", s.q_avg); }});
     rows.push_back({"minimum quality", [](const QualityStats& s) { return fmt("%.4f", s.q_min); }});
-    rows.push_back({"minimum angle", [](const QualityStats& s) { return fmt("%.2f", s.min_angle); }});
-    rows.push_back({"maximum angle", [](const QualityStats& s) { return fmt("%.2f", s.max_angle); }});
+    rows.push_back(
+        {"minimum angle", [](const QualityStats& s) { return fmt("%.2f", s.min_angle); }});
+    rows.push_back(
+        {"maximum angle", [](const QualityStats& s) { return fmt("%.2f", s.max_angle); }});
   }
   // Extra rows: the union of the columns' extra names, in first-seen order.
   std::vector<std::string> extra;
@@ -58,9 +69,10 @@ std::vector<Row> rows_for(const std::vector<QualityStats>& cols) {
   for (const auto& name : extra)
     rows.push_back({name, [name](const QualityStats& s) {
                       for (const auto& [k, v] : s.extra)
-                        if (k == name) return v == static_cast<long>(v) && std::abs(v) < 1e12
-                                                  ? count(static_cast<long>(v))
-                                                  : fmt("%.3f", v);
+                        if (k == name)
+                          return v == static_cast<long>(v) && std::abs(v) < 1e12
+                                     ? count(static_cast<long>(v))
+                                     : fmt("%.3f", v);
                       return std::string("-");
                     }});
   return rows;
@@ -78,14 +90,19 @@ std::string QualityTable::to_text() const {
     for (const auto& r : rows) w[c] = std::max(w[c], r.cell(columns[c]).size());
   }
   std::string out;
-  auto pad_left = [](const std::string& s, std::size_t n) { return std::string(n - s.size(), ' ') + s; };
-  auto pad_right = [](const std::string& s, std::size_t n) { return s + std::string(n - s.size(), ' '); };
+  auto pad_left = [](const std::string& s, std::size_t n) {
+    return std::string(n - s.size(), ' ') + s;
+  };
+  auto pad_right = [](const std::string& s, std::size_t n) {
+    return s + std::string(n - s.size(), ' ');
+  };
   out += pad_right("", w0);
   for (std::size_t c = 0; c < columns.size(); ++c) out += "  " + pad_left(columns[c].label, w[c]);
   out += "\n";
   for (const auto& r : rows) {
     out += pad_right(r.name, w0);
-    for (std::size_t c = 0; c < columns.size(); ++c) out += "  " + pad_left(r.cell(columns[c]), w[c]);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      out += "  " + pad_left(r.cell(columns[c]), w[c]);
     out += "\n";
   }
   return out;

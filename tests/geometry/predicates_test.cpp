@@ -24,22 +24,25 @@ TEST(Predicates, SignConventions) {
 
 TEST(Predicates, ExactOnDegenerateInput) {
   // Collinear points with coordinates that round badly in floating point.
-  const double a[2] = {0.1, 0.1}, b[2] = {0.2, 0.2}, c[2] = {0.30000000000000004, 0.30000000000000004};
+  const double a[2] = {0.1, 0.1}, b[2] = {0.2, 0.2},
+               c[2] = {0.30000000000000004, 0.30000000000000004};
   EXPECT_EQ(orient2d(a, b, c), 0.0);
   // Cospherical: the 8 corners of a cube lie on one sphere.
-  const double p0[3] = {0, 0, 0}, p1[3] = {1, 0, 0}, p2[3] = {0, 1, 0}, p3[3] = {0, 0, 1}, p7[3] = {1, 1, 1};
+  const double p0[3] = {0, 0, 0}, p1[3] = {1, 0, 0}, p2[3] = {0, 1, 0}, p3[3] = {0, 0, 1},
+               p7[3] = {1, 1, 1};
   EXPECT_EQ(insphere(p0, p1, p2, p3, p7), 0.0);
   // Cocircular: the 4 corners of a square.
   const double s3[2] = {1, 1};
   EXPECT_EQ(incircle(p0, p1, p2, s3), 0.0);
   // Coplanar points far from the origin.
-  const double q0[3] = {1e6 + 0.1, 1e6, 3}, q1[3] = {1e6 + 0.2, 1e6 + 0.1, 3}, q2[3] = {1e6, 1e6 + 0.3, 3},
-               q3[3] = {1e6 + 0.7, 1e6 + 0.7, 3};
+  const double q0[3] = {1e6 + 0.1, 1e6, 3}, q1[3] = {1e6 + 0.2, 1e6 + 0.1, 3},
+               q2[3] = {1e6, 1e6 + 0.3, 3}, q3[3] = {1e6 + 0.7, 1e6 + 0.7, 3};
   EXPECT_EQ(orient3d(q0, q1, q2, q3), 0.0);
 }
 
 TEST(TetGeometry, CircumcenterIsEquidistant) {
-  const double a[3] = {0.1, 0.2, 0.3}, b[3] = {1.3, 0.1, 0.2}, c[3] = {0.4, 1.1, 0.1}, d[3] = {0.3, 0.2, 0.9};
+  const double a[3] = {0.1, 0.2, 0.3}, b[3] = {1.3, 0.1, 0.2}, c[3] = {0.4, 1.1, 0.1},
+               d[3] = {0.3, 0.2, 0.9};
   const Vec3 cc = tet_circumcenter(a, b, c, d);
   const double r = dist2(cc.data(), a);
   EXPECT_NEAR(dist2(cc.data(), b), r, 1e-12);

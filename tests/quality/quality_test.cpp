@@ -14,8 +14,10 @@ const double kRegular[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}
 
 TEST(TetQuality, RegularTetIsOneForEveryShapeMeasure) {
   // kRegular as listed is negatively oriented (Q = -1); swapping two vertices makes it positive.
-  EXPECT_NEAR(tet_quality(kRegular[0], kRegular[1], kRegular[2], kRegular[3], Measure::kQ), -1.0, 1e-12);
-  EXPECT_NEAR(tet_quality(kRegular[1], kRegular[0], kRegular[2], kRegular[3], Measure::kQ), 1.0, 1e-12);
+  EXPECT_NEAR(tet_quality(kRegular[0], kRegular[1], kRegular[2], kRegular[3], Measure::kQ), -1.0,
+              1e-12);
+  EXPECT_NEAR(tet_quality(kRegular[1], kRegular[0], kRegular[2], kRegular[3], Measure::kQ), 1.0,
+              1e-12);
   const double a[3] = {1, 1, 1}, b[3] = {-1, 1, -1}, c[3] = {1, -1, -1}, d[3] = {-1, -1, 1};
   const double s = tet_quality(a, b, c, d, Measure::kQ);
   EXPECT_NEAR(std::fabs(s), 1.0, 1e-12);
@@ -58,7 +60,8 @@ TEST(TetQuality, CornerTetDihedralAngles) {
   // acos(1/sqrt3) = 54.7356 deg at the slanted face.
   const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0, 0, 1};
   EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kMaxAngle), 90.0, 1e-9);
-  EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kMinAngle), std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kMinAngle),
+              std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
   // Q = 72 sqrt3 (1/6) / (3 + 3*2)^1.5
   EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kQ), 12 * std::sqrt(3.0) / 27.0, 1e-12);
 }
@@ -112,9 +115,10 @@ TEST(QualityTable, HasThePaperRowsInTextMarkdownAndJson) {
   opt.extra.push_back({"iterations", 12});
   t.columns.push_back(opt);
   const std::string text = t.to_text();
-  for (const char* row : {"number of elements", "0.7 < Q <= 1.0", "0.5 < Q <= 0.7", "0.3 < Q <= 0.5",
-                          "0.0 < Q <= 0.3", "Q_min", "bad elements (%)", "good elements (%)",
-                          "average quality", "min dihedral angle", "max dihedral angle", "iterations"})
+  for (const char* row :
+       {"number of elements", "0.7 < Q <= 1.0", "0.5 < Q <= 0.7", "0.3 < Q <= 0.5",
+        "0.0 < Q <= 0.3", "Q_min", "bad elements (%)", "good elements (%)", "average quality",
+        "min dihedral angle", "max dihedral angle", "iterations"})
     EXPECT_NE(text.find(row), std::string::npos) << row;
   EXPECT_NE(text.find("CVDT+SWAP"), std::string::npos);
   EXPECT_EQ(text.find("inverted"), std::string::npos);  // no inverted element: no such row

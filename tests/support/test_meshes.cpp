@@ -11,9 +11,15 @@
 
 namespace cvtmesh::testing {
 
-std::string geo_path(const std::string& name) { return std::string(CVTMESH_SOURCE_DIR) + "/geo/" + name; }
-std::string cli_path() { return CVTMESH_CLI_PATH; }
-std::string shared_path(const std::string& rel) { return std::string(CVTMESH_SHARED_DIR) + "/" + rel; }
+std::string geo_path(const std::string& name) {
+  return std::string(CVTMESH_SOURCE_DIR) + "/geo/" + name;
+}
+std::string cli_path() {
+  return CVTMESH_CLI_PATH;
+}
+std::string shared_path(const std::string& rel) {
+  return std::string(CVTMESH_SHARED_DIR) + "/" + rel;
+}
 
 std::string temp_dir() {
   char tmpl[] = "/tmp/cvtmesh-test-XXXXXX";
@@ -42,10 +48,12 @@ TetMesh cube6() {
     m.xyz.push_back((i >> 2) & 1);
   }
   // Kuhn triangulation: paths from 0 to 7 through the cube's vertices.
-  const int paths[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
+  const int paths[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7},
+                           {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
   for (const auto& p : paths) {
     int t[4] = {p[0], p[1], p[2], p[3]};
-    if (orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0) std::swap(t[2], t[3]);
+    if (orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
+      std::swap(t[2], t[3]);
     m.tets.insert(m.tets.end(), t, t + 4);
     m.tet_region.push_back(1);
   }

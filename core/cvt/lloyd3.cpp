@@ -1,0 +1,178 @@
+#include "core/cvt/lloyd3.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/cvt/voronoi_cell3.h"
+#include "core/delaunay/delaunay3.h"
+#include "core/mesh/check_mesh.h"
+#include "core/mesh/locate_point.h"
+#include "core/mesh/vertex_star.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+// rho = 1/H^5 at every vertex of the mesh (P1 density for the cells); H at every vertex too.
+void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<int>& hints,
+                    std::vector<double>& H, std::vector<double>& rho) {
+  const int nv = m.nb_vertices();
+  hints.resize(nv, -1);
+  H.resize(nv);
+  rho.resize(nv);
+  for (int v = 0; v < nv; ++v) {
+    double g[3];
+    H[v] = sizing.eval(m.point(v), g, &hints[v]);
+    rho[v] = 1.0 / std::pow(H[v], 5);
+  }
+}
+
+double coordinate_eps(const TetMesh& m) {
+  double emax = 0;
+  for (double x : m.xyz) emax = std::max(emax, std::fabs(x));
+  return 1e-12 * std::max(1.0, emax);
+}
+
+}  // namespace
+
+CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
+                                   std::vector<int>* hints) {
+  CellCentroids c;
+  const int nv = mesh.nb_vertices();
+  c.centroid.assign(3 * static_cast<std::size_t>(nv), 0);
+  c.mass.assign(nv, 0);
+  const VertexStar star = build_vertex_star(mesh);
+  const std::vector<char> constrained = constrained_face_flags(mesh);
+  CellWorkspace ws;
+  std::vector<int> local_hints;
+  if (!hints) hints = &local_hints;
+  std::vector<double> H, rho;
+  vertex_density(mesh, sizing, *hints, H, rho);
+  const double eps = coordinate_eps(mesh);
+  const std::vector<double> cc = tet_circumcenters(mesh);
+  for (int v = 0; v < nv; ++v) {
+    const double* z = mesh.point(v);
+    if (star.offset[v] == star.offset[v + 1]) {
+      for (int d = 0; d < 3; ++d) c.centroid[3 * v + d] = z[d];
+      continue;
+    }
+    CellIntegrals ci;
+    if (!dual_voronoi_cell(mesh, star, constrained, cc, v, &rho, ci))
+      ci = restricted_voronoi_cell(mesh, star, constrained, v, eps, ws, &rho);
+    const Vec3 x = ci.centroid(z);
+    for (int d = 0; d < 3; ++d) c.centroid[3 * v + d] = x[d];
+    c.mass[v] = ci.mass;
+    c.energy += ci.energy;
+  }
+  return c;
+}
+
+namespace {
+
+class Lloyd3Problem {
+ public:
+  Lloyd3Problem(TetMesh& mesh, const Lloyd3Options& o)
+      : m_(mesh), o_(o), delaunay_(Delaunay3::create(o.backend)) {
+    if (o_.sizing)
+      sizing_ = o_.sizing;
+    else
+      sizing_ = std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
+    hints_.assign(m_.nb_vertices(), -1);
+  }
+
+  LloydStep step() {
+    LloydStep s;
+    const int nv = m_.nb_vertices();
+    const VertexStar star = build_vertex_star(m_);
+    const std::vector<char> constrained = constrained_face_flags(m_);
+    CellWorkspace ws;
+    const double eps = coordinate_eps(m_);
+    vertex_density(m_, *sizing_, hints_, H_, rho_);
+    const std::vector<double> cc = tet_circumcenters(m_);
+    std::vector<double> target(m_.xyz);
+    double dsum = 0;
+    for (int v = 0; v < nv; ++v) {
+      const bool free_v = m_.vclass[v].dim == 3 && star.offset[v] < star.offset[v + 1];
+      if (!free_v && !o_.compute_energy) continue;
+      if (star.offset[v] == star.offset[v + 1]) continue;
+      const double* z = m_.point(v);
+      CellIntegrals ci;
+      if (dual_voronoi_cell(m_, star, constrained, cc, v, &rho_, ci))
+        ++nb_dual_;
+      else
+        ci = restricted_voronoi_cell(m_, star, constrained, v, eps, ws, &rho_);
+      s.energy += ci.energy;
+      if (!free_v) continue;
+      ++s.nb_free;
+      const Vec3 cv = ci.centroid(z);
+      const double c[3] = {cv[0], cv[1], cv[2]};
+      const double H = H_[v];
+      if (!(ci.mass > 0) || !std::isfinite(c[0] + c[1] + c[2])) continue;
+      // D uses the full move to the centroid (the paper's P_i - P*_i).
+      dsum += dist2(z, c) / (H * H);
+      // Safeguard: the target must lie in the vertex's region, reachable without crossing the
+      // boundary or an interface; otherwise pull it back towards z.
+      double t = 1.0;
+      bool ok = false;
+      for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
+        double x[3];
+        for (int d = 0; d < 3; ++d) x[d] = z[d] + t * (c[d] - z[d]);
+        const LocateResult r = locate_point(m_, x, star.tet[star.offset[v]], &constrained, 100000);
+        if (r.status == LocateStatus::kInside) {
+          for (int d = 0; d < 3; ++d) target[3 * v + d] = x[d];
+          ok = true;
+          break;
+        }
+      }
+      if (!ok || t < 1.0) ++s.nb_limited;
+    }
+    s.D = s.nb_free ? dsum / s.nb_free : 0.0;
+    // Move and re-triangulate.
+    const std::vector<double> old_xyz = m_.xyz;
+    m_.xyz = target;
+    const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
+    nb_steiner_ += ds.nb_steiner;
+    verify_after_step();
+    return s;
+  }
+
+  int nb_steiner() const { return nb_steiner_; }
+
+ private:
+  void verify_after_step() {
+    const MeshCheck c = check_mesh(m_);
+    if (!c.ok)
+      throw InvariantError("Lloyd iteration produced an invalid mesh: " +
+                           (c.problems.empty() ? std::string("?") : c.problems.front()));
+    // Every vertex that had tets must still have some (no point lost in a hole).
+    std::vector<char> used(m_.nb_vertices(), 0);
+    for (int t = 0; t < m_.nb_tets(); ++t)
+      if (m_.tets[4 * t] >= 0)
+        for (int k = 0; k < 4; ++k) used[m_.tets[4 * t + k]] = 1;
+    for (int v = 0; v < m_.nb_vertices(); ++v)
+      if (m_.vclass[v].dim == 3 && !used[v])
+        throw InvariantError("Lloyd iteration left interior vertex " + std::to_string(v) +
+                             " outside every tet");
+  }
+
+  TetMesh& m_;
+  Lloyd3Options o_;
+  std::unique_ptr<Delaunay3> delaunay_;
+  std::shared_ptr<const SizingField3> sizing_;
+  std::vector<int> hints_;
+  std::vector<double> H_, rho_;
+  int nb_steiner_ = 0;
+  long nb_dual_ = 0;
+};
+
+}  // namespace
+
+LloydResult lloyd_optimize_3d(TetMesh& mesh, const Lloyd3Options& options,
+                              const std::function<void(const LloydStep&)>& progress) {
+  const MeshCheck c = check_mesh(mesh);
+  if (!c.ok) throw InvariantError("lloyd_optimize_3d: invalid input mesh: " + c.problems.front());
+  Lloyd3Problem problem(mesh, options);
+  return lloyd_iterate(problem, options.lloyd, progress);
+}
+
+}  // namespace cvtmesh

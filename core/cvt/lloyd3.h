@@ -1,0 +1,43 @@
+// CVDT by Lloyd iteration in 3D (Du & Wang, Algorithm 2.1): interior vertices move to the mass
+// centroids of their Voronoi cells restricted to their region (clipped by the domain boundary
+// and interfaces), under rho = 1/H^5; then the constrained boundary Delaunay tetrahedralization
+// of the moved points is rebuilt (Delaunay3 backend). Boundary and interface vertices and
+// triangles never move.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "core/cvt/lloyd.h"
+#include "core/cvt/sizing_field3.h"
+#include "core/mesh/tet_mesh.h"
+
+namespace cvtmesh {
+
+struct Lloyd3Options {
+  LloydOptions lloyd;
+  std::string backend = "tetgen";
+  // If null, the input mesh's local edge length (make_mesh_sizing3 on the input).
+  std::shared_ptr<const SizingField3> sizing;
+  bool compute_energy = true;  // also integrate the cells of the fixed vertices (full energy F)
+  // A target centroid whose straight move would leave the region is pulled back towards the
+  // vertex (halved up to this many times; the vertex stays put if still outside).
+  int max_halvings = 4;
+};
+
+// Runs the iteration on `mesh` (valid on entry; valid, with the same constrained triangles, on
+// exit). Throws InvariantError if an iteration breaks an invariant.
+LloydResult lloyd_optimize_3d(TetMesh& mesh, const Lloyd3Options& options,
+                              const std::function<void(const LloydStep&)>& progress = nullptr);
+
+// The CVT energy F = sum_i int_{V_i ∩ region} rho |x - z_i|^2 of the current mesh (all vertices),
+// and the centroid of every vertex's restricted cell (3 per vertex). Exposed for tests.
+struct CellCentroids {
+  std::vector<double> centroid;  // 3 * #V (fixed vertices included)
+  std::vector<double> mass;      // #V
+  double energy = 0;
+};
+CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
+                                   std::vector<int>* sizing_hints = nullptr);
+
+}  // namespace cvtmesh

@@ -1,0 +1,35 @@
+// A convex polytope (faces as polygons) clipped by half-spaces, and its moments. Used to build
+// Voronoi cells restricted to a tet (cell ∩ tet = tet clipped by the bisector half-spaces).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/geometry/vec3.h"
+
+namespace cvtmesh {
+
+struct Polytope {
+  std::vector<std::vector<Vec3>> faces;  // convex polygons, any orientation
+  std::vector<int> face_id;              // who made the face: 0..3 = tet faces, >= 4 = clip planes
+};
+
+// The tetrahedron p0..p3 as a polytope; face f (opposite vertex f) has id f.
+Polytope tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3);
+
+// Keeps the part {x : n.x <= d}; the new face gets `id`. Returns false if nothing is left.
+// `eps` is a length: points within eps of the plane count as on it.
+bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps);
+
+// Moments relative to an origin z: m0 = volume, m1 = int (x - z), m2 = int (x - z)(x - z)^T.
+struct Moments {
+  double m0 = 0;
+  Vec3 m1{0, 0, 0};
+  std::array<double, 9> m2{};  // row-major 3x3
+  void add(const Moments& o);
+};
+Moments polytope_moments(const Polytope& p, const Vec3& z);
+
+// Area of the faces with the given id (0 if the face is gone).
+double face_area(const Polytope& p, int id);
+
+}  // namespace cvtmesh

@@ -1,0 +1,143 @@
+// The TetGen 1.5 backend of Delaunay3: constrained Delaunay tetrahedralization of the piecewise
+// linear complex made of the constrained triangles, with every mesh vertex inserted.
+#include <tetgen.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/delaunay/delaunay3.h"
+#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/predicates.h"
+#include "core/mesh/build_adjacency.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+// One interior point per region: the centroid of a tet of that region (strictly inside it, and
+// region boundaries are constrained faces that do not move).
+std::map<int, std::array<double, 3>> region_seeds(const TetMesh& m) {
+  std::map<int, std::array<double, 3>> seeds;
+  std::map<int, double> best;
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* v = &m.tets[4 * t];
+    if (v[0] < 0) continue;
+    // Prefer a fat tet: a seed near a face of a flat tet is fragile.
+    const double vol = orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+    const int r = m.tet_region[t];
+    if (best.count(r) && best[r] >= vol) continue;
+    best[r] = vol;
+    std::array<double, 3> c{0, 0, 0};
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) c[d] += 0.25 * m.point(v[k])[d];
+    seeds[r] = c;
+  }
+  return seeds;
+}
+
+class TetgenDelaunay3 final : public Delaunay3 {
+ public:
+  std::string name() const override { return "tetgen"; }
+
+  Delaunay3Stats retetrahedralize(TetMesh& m) override {
+    Delaunay3Stats stats;
+    const auto seeds = region_seeds(m);
+    const int nv = m.nb_vertices();
+
+    tetgenio in, out;
+    in.firstnumber = 0;
+    in.numberofpoints = nv;
+    in.pointlist = new REAL[3 * static_cast<std::size_t>(nv)];
+    std::copy(m.xyz.begin(), m.xyz.end(), in.pointlist);
+
+    const int nf = m.nb_tris();
+    in.numberoffacets = nf;
+    in.facetlist = new tetgenio::facet[nf];
+    in.facetmarkerlist = new int[nf];
+    for (int f = 0; f < nf; ++f) {
+      tetgenio::facet& fa = in.facetlist[f];
+      tetgenio::init(&fa);
+      fa.numberofpolygons = 1;
+      fa.polygonlist = new tetgenio::polygon[1];
+      tetgenio::init(&fa.polygonlist[0]);
+      fa.polygonlist[0].numberofvertices = 3;
+      fa.polygonlist[0].vertexlist = new int[3];
+      for (int k = 0; k < 3; ++k) fa.polygonlist[0].vertexlist[k] = m.tris[3 * f + k];
+      in.facetmarkerlist[f] = m.tri_surface[f];
+    }
+    in.numberofregions = static_cast<int>(seeds.size());
+    in.regionlist = new REAL[5 * seeds.size()];
+    int i = 0;
+    for (const auto& [tag, c] : seeds) {
+      in.regionlist[5 * i + 0] = c[0];
+      in.regionlist[5 * i + 1] = c[1];
+      in.regionlist[5 * i + 2] = c[2];
+      in.regionlist[5 * i + 3] = tag;
+      in.regionlist[5 * i + 4] = -1;
+      ++i;
+    }
+    // p: PLC; Y: keep the boundary mesh (no Steiner point on it); A: region attributes;
+    // z: 0-based; Q: quiet; M: do not merge coplanar facets.
+    char switches[] = "pYAzQM";
+    try {
+      tetgen_library().tetrahedralize(switches, &in, &out, nullptr, nullptr);
+    } catch (int code) {
+      throw InvariantError("TetGen failed to recover the boundary (error code " +
+                           std::to_string(code) + ")");
+    }
+    if (out.numberofpoints < nv)
+      throw InvariantError("TetGen lost input points (" + std::to_string(nv - out.numberofpoints) +
+                           ")");
+
+    // Steiner points (interior only, thanks to -Y) are appended as free vertices.
+    stats.nb_steiner = out.numberofpoints - nv;
+    for (int p = nv; p < out.numberofpoints; ++p) {
+      m.xyz.insert(m.xyz.end(), out.pointlist + 3 * p, out.pointlist + 3 * p + 3);
+      m.vclass.push_back(VertexClass{3, 0});
+      if (!m.node_tags.empty()) m.node_tags.push_back(0);
+    }
+    std::set<int> regions;
+    for (const auto& [tag, c] : seeds) regions.insert(tag);
+    // Regions of the new tets are those of the seeds; a Steiner point takes the region of one of
+    // its tets.
+    m.tets.clear();
+    m.tet_region.clear();
+    m.tet_tags.clear();
+    for (int t = 0; t < out.numberoftetrahedra; ++t) {
+      const int region = static_cast<int>(out.tetrahedronattributelist[t]);
+      if (!regions.count(region)) {
+        ++stats.nb_dropped_tets;
+        continue;
+      }
+      int v[4];
+      for (int k = 0; k < 4; ++k) v[k] = out.tetrahedronlist[4 * t + k];
+      if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0)
+        std::swap(v[2], v[3]);
+      m.tets.insert(m.tets.end(), v, v + 4);
+      m.tet_region.push_back(region);
+    }
+    for (int p = nv; p < m.nb_vertices(); ++p)
+      for (int t = 0; t < m.nb_tets(); ++t)
+        if (std::find(&m.tets[4 * t], &m.tets[4 * t] + 4, p) != &m.tets[4 * t] + 4) {
+          m.vclass[p].entity = m.tet_region[t];
+          break;
+        }
+    build_adjacency(m);
+    return stats;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Delaunay3> Delaunay3::create(const std::string& name) {
+  if (name == "tetgen") return std::make_unique<TetgenDelaunay3>();
+  throw std::invalid_argument("unknown Delaunay backend '" + name + "' (available: tetgen)");
+}
+
+}  // namespace cvtmesh

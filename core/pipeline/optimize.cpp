@@ -1,0 +1,95 @@
+#include "core/pipeline/optimize.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "core/cvt/lloyd3.h"
+#include "core/cvt/sizing_field3.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+std::shared_ptr<const SizingField3> sizing3(const TetMesh& mesh, const OptimizeOptions& o) {
+  if (o.sizing == "mesh")
+    return std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
+  if (o.sizing == "uniform")
+    return std::shared_ptr<const SizingField3>(
+        make_uniform_sizing3(mean_edge_length(mesh)).release());
+  if (o.sizing == "function") {
+    if (!o.size_function) throw std::invalid_argument("sizing 'function' needs a size_function");
+    return std::shared_ptr<const SizingField3>(
+        make_function_sizing3(o.size_function, 1e-4 * mean_edge_length(mesh)).release());
+  }
+  throw std::invalid_argument("unknown sizing '" + o.sizing +
+                              "' (expected mesh, uniform or function)");
+}
+
+void report(const OptimizeOptions& o, const std::string& phase, int it, double D, double energy,
+            const QualityStats& s) {
+  if (!o.progress) return;
+  OptimizeProgress p;
+  p.phase = phase;
+  p.iteration = it;
+  p.D = D;
+  p.energy = energy;
+  p.q_min = s.q_min;
+  p.q_avg = s.q_avg;
+  o.progress(p);
+}
+
+// Lloyd to a CVDT (3D).
+void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  Lloyd3Options lo;
+  lo.lloyd.max_iterations = o.max_iterations;
+  lo.lloyd.tolerance = o.tolerance;
+  lo.sizing = sizing3(mesh, o);
+  const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
+    if (o.progress) report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""));
+  });
+  r.iterations = lr.iterations;
+  r.converged = lr.converged;
+}
+
+using Method3 = void (*)(TetMesh&, const OptimizeOptions&, OptimizeResult&);
+const std::map<std::string, Method3>& methods3() {
+  static const std::map<std::string, Method3> m = {
+      {"cvdt", run_cvdt3},
+  };
+  return m;
+}
+
+}  // namespace
+
+std::vector<std::string> methods_for_dim(int dim) {
+  std::vector<std::string> out;
+  if (dim == 3) {
+    for (const char* name : {"cvdt+swap", "cvdt", "combined", "swap"})
+      if (methods3().count(name)) out.push_back(name);
+  }
+  return out;
+}
+
+OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
+  OptimizeResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (data.dim == 3) {
+    auto it = methods3().find(o.method);
+    if (it == methods3().end()) throw std::invalid_argument("unknown 3D method '" + o.method + "'");
+    r.before = quality_stats(data.tet, "before");
+    const TetMesh input = data.tet;
+    it->second(data.tet, o, r);
+    if (o.verify) verify_optimized(input, data.tet);
+    r.after = quality_stats(data.tet, o.method);
+  } else {
+    throw std::invalid_argument("no 2D method '" + o.method + "' available");
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,22 @@
+// The invariants every optimizer run must keep (checked at the end of each run, and by
+// `cvtmesh check`): a violation is a bug and throws InvariantError.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/mesh/tet_mesh.h"
+#include "core/mesh/tri_mesh2.h"
+
+namespace cvtmesh {
+
+// After vs before: valid mesh (check_mesh: adjacency, no inverted/flat tet, boundary closed),
+// the same constrained triangles (same vertex triples with the same coordinates and surface tags),
+// fixed vertices unmoved, every region present with its volume conserved (1e-12 relative... up to
+// the rounding of the volume sums), the physical groups unchanged.
+void verify_optimized(const TetMesh& before, const TetMesh& after);
+void verify_optimized(const TriMesh2& before, const TriMesh2& after);
+
+// Volume of each region, indexed by region tag (sorted by tag).
+std::vector<std::pair<int, double>> region_volumes(const TetMesh& mesh);
+
+}  // namespace cvtmesh
