@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <thread>
@@ -34,7 +35,8 @@ const char* const kUsage =
     "  --no-quality-views    do not add quality views after a run\n"
     "  --show-quality        show the quality of the model's mesh on start (meshing it if needed)\n"
     "  --run-on-start        press Run once the window is up\n"
-    "  --result-json FILE    write the result table (JSON) to FILE after each run\n"
+    "  --result-json FILE    after each action, write its outcome to FILE (JSON: {\"action\":\n"
+    "                        \"optimize\"|\"quality\", \"result\"|\"error\": ...})\n"
     "  --exit-after-run [S]  close the window S seconds (default 0) after the first run;\n"
     "                        the exit status is 0 if the run succeeded, 1 if not\n"
     "  -h, --help            this help\n"
@@ -140,19 +142,27 @@ class App {
   int run() {
     define(args_.preset);
     gui_set_button("Run", kRun);
-    gui_start();
+    gui_start(300);
     if (args_.show_quality) gui_post_action(kQuality);
     if (args_.run_on_start) gui_post_action(kRun);
     while (gui_wait(0.25)) {
       if (exit_at_ && elapsed() >= *exit_at_) break;
       const std::string action = gui_take_action();
+      if (action == kRun || action == kDone) action_ = "optimize";
+      if (action == kQuality) action_ = "quality";
       try {
-        if (action == kRun) start();
-        else if (action == kStop) job_.cancel = true;
-        else if (action == kDone) finish();
-        else if (action == kQuality) show_quality();
-        else if (action == "reset") define({});
-        else if (!job_.running && gui_model_dim() != dim_ && gui_model_dim() > 0) define({});
+        if (action == kRun)
+          start();
+        else if (action == kStop)
+          job_.cancel = true;
+        else if (action == kDone)
+          finish();
+        else if (action == kQuality)
+          show_quality();
+        else if (action == "reset")
+          define({});
+        else if (!job_.running && gui_model_dim() != dim_ && gui_model_dim() > 0)
+          define({});
       } catch (const std::exception& e) {
         report_error(e.what());
       }
@@ -168,6 +178,7 @@ class App {
   void define(const plugin::PanelPreset& preset) {
     dim_ = gui_model_dim();
     plugin::define_panel(tree_, dim_ == 2 ? 2 : 3, preset);
+    plugin::define_quality_button(tree_, kQuality);
     gui_refresh();
   }
 
@@ -220,11 +231,11 @@ class App {
     tree_.progress("cvtmesh: writing the optimized mesh back...");
     const GmshOptimizeResult r = gmsh_write_back(job_.data, job_.result, job_.options);
     plugin::show_results(tree_, r);
-    if (!r.views.empty()) gui_show_view(r.views.front());
+    if (!r.views.empty()) gui_show_view(r.views.front(), 0, 1, true);  // Q over [0, 1], cut
     gui_refresh();
     tree_.info(plugin::summary(r));
     tree_.progress(plugin::summary(r));
-    if (!args_.result_json.empty()) write_json(r.to_json());
+    write_json("optimize", "result", nlohmann::ordered_json::parse(r.to_json()));
     ran(0);
   }
 
@@ -233,19 +244,24 @@ class App {
     o.generate = true;
     o.quality_views = true;
     const GmshQualityResult q = gmsh_quality(o);
-    if (!q.views.empty()) gui_show_view(q.views.front());
+    if (!q.views.empty()) gui_show_view(q.views.front(), 0, 1, true);
     gui_refresh();
     char buf[200];
-    std::snprintf(buf, sizeof buf, "cvtmesh: current mesh: %ld elements, Q avg %.4f, Q min %.4f, bad %.2f%%",
+    std::snprintf(buf, sizeof buf,
+                  "cvtmesh: current mesh: %ld elements, Q avg %.4f, Q min %.4f, bad %.2f%%",
                   q.stats.nb_elements, q.stats.q_avg, q.stats.q_min, q.stats.bad_pct);
     tree_.info(buf);
     tree_.progress(buf);
+    QualityTable t;
+    t.columns = {q.stats};
+    auto result = nlohmann::ordered_json::parse(t.to_json()).at(0);
+    result["views"] = q.views;
+    write_json("quality", "result", result);
   }
 
   void report_error(const std::string& message) {
     tree_.error(message);
-    if (!args_.result_json.empty())
-      write_json(std::string("{\"error\": ") + quoted(message) + "}\n");
+    write_json(action_, "error", message);
     gui_refresh();
     ran(1);
   }
@@ -256,12 +272,17 @@ class App {
     exit_at_ = elapsed() + *args_.exit_after_run;
   }
 
-  void write_json(const std::string& text) {
+  void write_json(const std::string& action, const std::string& key,
+                  const nlohmann::ordered_json& value) {
+    if (args_.result_json.empty()) return;
+    nlohmann::ordered_json j;
+    j["action"] = action;
+    j[key] = value;
     // Written whole under a temporary name, then renamed: a watcher never sees half a file.
     const std::string tmp = args_.result_json + ".tmp";
     {
       std::ofstream f(tmp);
-      f << text;
+      f << j.dump(2) << "\n";
       if (!f) {
         tree_.error("cvtmesh: cannot write " + tmp);
         return;
@@ -269,19 +290,6 @@ class App {
     }
     if (std::rename(tmp.c_str(), args_.result_json.c_str()) != 0)
       tree_.error("cvtmesh: cannot write " + args_.result_json);
-  }
-
-  static std::string quoted(const std::string& s) {
-    std::string q = "\"";
-    for (char c : s) {
-      if (c == '"' || c == '\\') q += '\\';
-      if (c == '\n') {
-        q += "\\n";
-        continue;
-      }
-      q += c;
-    }
-    return q + "\"";
   }
 
   double elapsed() const {
@@ -292,6 +300,7 @@ class App {
   LocalOnelab tree_;
   Job job_;
   int dim_ = -1;
+  std::string action_ = "optimize";  // what an error is reported against
   int exit_status_ = 0;
   std::optional<double> exit_at_;
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();

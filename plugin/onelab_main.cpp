@@ -1,10 +1,12 @@
 // cvtmesh-onelab: the optimizer as a ONELAB client of an unmodified Gmsh. Register it with
-//   gmsh model.geo -setstring Solver.Name0 cvtmesh -setstring Solver.Executable0 /path/cvtmesh-onelab
+//   gmsh model.geo -setstring Solver.Name0 cvtmesh -setstring Solver.Executable0
+//   /path/cvtmesh-onelab
 // (or Solver.Name0/Solver.Executable0 in an option file), pick Modules > Solver > cvtmesh in the
 // tree, then press Run. Gmsh launches `cvtmesh-onelab -onelab NAME SOCKET` for each action: on
 // initialize/check the "Mesh optimization (CVT)" inputs are (re)defined in Gmsh's tree; on compute
 // the mesh Gmsh saved (Gmsh/MshFileName) is optimized, written next to it as <name>_cvt.msh with
 // per-element quality, and opened in the GUI in place of the model. Thin: the work is in core/.
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -34,9 +36,28 @@ std::string output_path(const std::string& input) {
                          ? input.substr(0, dot)
                          : input;
   const std::string suffix = "_cvt";
-  if (stem.size() < suffix.size() || stem.compare(stem.size() - suffix.size(), suffix.size(), suffix))
+  if (stem.size() < suffix.size() ||
+      stem.compare(stem.size() - suffix.size(), suffix.size(), suffix))
     stem += suffix;
   return stem + ".msh";
+}
+
+// .geo-language options that show the loaded result like cvtmesh-gui does: the Q view alone over
+// [0, 1]; in 3D cut by the plane x = x_mid (whole elements) so that the inside shows.
+std::string display_script(const MeshData& data, std::size_t nb_views) {
+  std::string s = "View[0].RangeType = 2; View[0].CustomMin = 0; View[0].CustomMax = 1;";
+  for (std::size_t v = 1; v < nb_views; ++v) s += " View[" + std::to_string(v) + "].Visible = 0;";
+  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
+    double lo = data.tet.point(0)[0], hi = lo;
+    for (int v = 0; v < data.tet.nb_vertices(); ++v) {
+      lo = std::min(lo, data.tet.point(v)[0]);
+      hi = std::max(hi, data.tet.point(v)[0]);
+    }
+    s += " General.Clip0A = -1; General.Clip0B = 0; General.Clip0C = 0; General.Clip0D = " +
+         std::to_string(0.5 * (lo + hi)) +
+         "; General.ClipWholeElements = 1; View[0].Clip = 1; Mesh.Clip = 1;";
+  }
+  return s;
 }
 
 int compute(plugin::RemoteOnelab& tree) {
@@ -70,6 +91,7 @@ int compute(plugin::RemoteOnelab& tree) {
   tree.info(plugin::summary(r));
   tree.info("cvtmesh: wrote " + out + "; opening it in place of the model");
   tree.open_project(out);
+  if (!w.fields.empty()) tree.parse_string(display_script(data, w.fields.size()));
   return 0;
 }
 
@@ -89,8 +111,11 @@ int main(int argc, char** argv) {
   }
   try {
     const std::string action = tree->action();
-    const int dim = plugin::panel_dim(*tree);
-    plugin::define_panel(*tree, dim ? dim : 3);
+    // The method list depends on the model's dimension: Gmsh publishes it; else what a previous
+    // compute found; else 3D.
+    int dim = static_cast<int>(tree->number("Gmsh/Model dimension").value_or(0));
+    if (dim != 2 && dim != 3) dim = plugin::panel_dim(*tree);
+    plugin::define_panel(*tree, dim == 2 ? 2 : 3);
     if (action == "compute") return compute(*tree);
     return 0;
   } catch (const std::exception& e) {

@@ -39,7 +39,9 @@ std::unique_ptr<RemoteOnelab> RemoteOnelab::connect(int argc, char** argv) {
   return nullptr;
 }
 
-std::string RemoteOnelab::action() { return string(name_ + "/Action").value_or(""); }
+std::string RemoteOnelab::action() {
+  return string(name_ + "/Action").value_or("");
+}
 
 void RemoteOnelab::set(const OnelabParam& p) {
   auto common = [&](cvtmesh_onelab::parameter& q) {
@@ -87,14 +89,24 @@ std::optional<std::string> RemoteOnelab::string(const std::string& name) {
   return v[0].getValue();
 }
 
-void RemoteOnelab::info(const std::string& message) { impl_->client->sendInfo(message); }
-void RemoteOnelab::error(const std::string& message) { impl_->client->sendError(message); }
-void RemoteOnelab::progress(const std::string& message) { impl_->client->sendProgress(message); }
+void RemoteOnelab::info(const std::string& message) {
+  impl_->client->sendInfo(message);
+}
+void RemoteOnelab::error(const std::string& message) {
+  impl_->client->sendError(message);
+}
+void RemoteOnelab::progress(const std::string& message) {
+  impl_->client->sendProgress(message);
+}
 void RemoteOnelab::open_project(const std::string& path) {
   impl_->client->sendOpenProjectRequest(path);
 }
 void RemoteOnelab::merge_file(const std::string& path) {
   impl_->client->sendMergeFileRequest(path);
+}
+
+void RemoteOnelab::parse_string(const std::string& text) {
+  impl_->client->sendParseStringRequest(text);
 }
 
 }  // namespace cvtmesh::plugin

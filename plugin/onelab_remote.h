@@ -33,6 +33,8 @@ class RemoteOnelab : public OnelabTree {
   // replaced), or merged into a new model drawn over the current one.
   void open_project(const std::string& path);
   void merge_file(const std::string& path);
+  // Has the GUI parse .geo-language text (e.g. options: "View[1].Visible = 0;").
+  void parse_string(const std::string& text);
 
  private:
   struct Impl;

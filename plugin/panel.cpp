@@ -58,8 +58,9 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   const std::vector<std::string> all = all_methods();
   const std::vector<std::string> here = methods_for_dim(dim);
 
-  OnelabParam method = input(kMethod, 0, "Du & Wang's methods for " + std::to_string(dim) +
-                                             "D meshes (cvdt: Lloyd CVT + Delaunay)");
+  OnelabParam method = input(
+      kMethod, 0,
+      "Du & Wang's methods for " + std::to_string(dim) + "D meshes (cvdt: Lloyd CVT + Delaunay)");
   for (const auto& m : here) {
     const auto code = std::find(all.begin(), all.end(), m) - all.begin();
     method.choices.push_back(static_cast<double>(code));
@@ -76,10 +77,11 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
                        "D meshes (available: " + join(here) + ")");
     method.number = method.choices[m - here.begin()];
   }
+  method.attributes.clear();  // Highlight colours a drop-down's text, not its background
   tree.set(method);
 
-  OnelabParam it = input(kIterations, OptimizeOptions{}.max_iterations,
-                         "Lloyd / outer iterations at most");
+  OnelabParam it =
+      input(kIterations, OptimizeOptions{}.max_iterations, "Lloyd / outer iterations at most");
   it.min = 1;
   it.max = 1000;
   it.step = 1;
@@ -101,11 +103,12 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
     sizing.labels.push_back(kSizings[i]);
   }
   if (auto cur = tree.number(kSizing)) sizing.number = *cur;
+  sizing.attributes.clear();
   if (!preset.sizing.empty()) {
     const auto k = std::find(kSizings.begin(), kSizings.end(), preset.sizing);
     if (k == kSizings.end())
-      throw InputError("sizing '" + preset.sizing + "' is not offered (available: " +
-                       join(kSizings) + ")");
+      throw InputError("sizing '" + preset.sizing +
+                       "' is not offered (available: " + join(kSizings) + ")");
     sizing.number = static_cast<double>(k - kSizings.begin());
   }
   tree.set(sizing);
@@ -122,6 +125,17 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   d.visible = false;
   d.never_changed = true;
   tree.set(d);
+}
+
+void define_quality_button(OnelabTree& tree, const std::string& action) {
+  OnelabParam b;
+  b.name = kGroup + "/5Show quality";
+  b.is_string = true;
+  b.text = action;
+  b.never_changed = true;
+  b.help = "Colour the current mesh by quality (Q) without changing it";
+  b.attributes = {{"Macro", "Action"}, {"Aspect", "Button"}};
+  tree.set(b);
 }
 
 int panel_dim(OnelabTree& tree) {
@@ -143,8 +157,7 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
   o.optimize.max_iterations =
       std::max(1, static_cast<int>(std::lround(tree.number(kIterations).value_or(100))));
   o.optimize.tolerance = tree.number(kTolerance).value_or(o.optimize.tolerance);
-  if (!(o.optimize.tolerance >= 0))
-    throw InputError("the tolerance must be a number >= 0");
+  if (!(o.optimize.tolerance >= 0)) throw InputError("the tolerance must be a number >= 0");
   const auto s = static_cast<std::size_t>(std::lround(tree.number(kSizing).value_or(0)));
   o.optimize.sizing = kSizings[std::min(s, kSizings.size() - 1)];
   o.quality_views = tree.number(kViews).value_or(1) != 0;

@@ -30,6 +30,9 @@ struct PanelPreset {
 // already in the tree are kept unless the preset gives one (a method that does not apply to dim
 // falls back to the first one). Throws InputError for a preset method or sizing not offered.
 void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset = {});
+// A "Show quality" button in the group (GUI only): pressing it sets ONELAB/Action to `action`.
+void define_quality_button(OnelabTree& tree, const std::string& action);
+
 // The dimension define_panel was last called with (0 if never).
 int panel_dim(OnelabTree& tree);
 

@@ -38,7 +38,8 @@ GmshOptimizeOptions options_from(const std::string& method, int max_iterations, 
   o.quality_views = quality_views;
   o.generate = generate;
   if (!progress.is_none()) {
-    if (!PyCallable_Check(progress.ptr())) throw py::type_error("progress must be callable or None");
+    if (!PyCallable_Check(progress.ptr()))
+      throw py::type_error("progress must be callable or None");
     o.optimize.progress = [progress](const OptimizeProgress& p) {
       py::dict d;
       d["phase"] = p.phase;
@@ -83,21 +84,21 @@ PYBIND11_MODULE(cvtmesh, m) {
 
   m.def(
       "optimize",
-      [](const std::string& method, int max_iterations, double tolerance,
-         const std::string& sizing, unsigned seed, int dim, bool quality_views, bool generate,
-         const py::object& progress) {
+      [](const std::string& method, int max_iterations, double tolerance, const std::string& sizing,
+         unsigned seed, int dim, bool quality_views, bool generate, const py::object& progress) {
         const auto o = options_from(method, max_iterations, tolerance, sizing, seed, dim,
                                     quality_views, generate, progress);
         return json_loads(gmsh_optimize(o).to_json());
       },
-      py::kw_only(), py::arg("method") = OptimizeOptions{}.method,
+      py::kw_only(), py::arg("method") = "",
       py::arg("max_iterations") = OptimizeOptions{}.max_iterations,
       py::arg("tolerance") = OptimizeOptions{}.tolerance,
       py::arg("sizing") = OptimizeOptions{}.sizing, py::arg("seed") = 0u, py::arg("dim") = -1,
       py::arg("quality_views") = false, py::arg("generate") = false,
       py::arg("progress") = py::none(),
       "Optimizes the mesh of the current Gmsh model in place: every volume (3D) or every planar\n"
-      "surface (2D) — dim=-1 picks the highest meshed dimension. Entities, physical groups and\n"
+      "surface (2D) with method (one of methods(dim); '' = the first, the paper's best) —\n"
+      "dim=-1 picks the highest meshed dimension. Entities, physical groups and\n"
       "lower-dimensional elements stay. generate=True meshes the model first if it has no mesh;\n"
       "quality_views=True adds per-element views (Q, radius ratio, min angle). progress, if\n"
       "given, is called with a dict (phase, iteration, D, energy, q_min, q_avg).\n"

@@ -71,9 +71,13 @@ std::optional<std::string> LocalOnelab::string(const std::string& name) {
   return v[0];
 }
 
-void LocalOnelab::info(const std::string& message) { gmsh::logger::write(message, "info"); }
+void LocalOnelab::info(const std::string& message) {
+  gmsh::logger::write(message, "info");
+}
 
-void LocalOnelab::error(const std::string& message) { gmsh::logger::write(message, "error"); }
+void LocalOnelab::error(const std::string& message) {
+  gmsh::logger::write(message, "error");
+}
 
 void LocalOnelab::progress(const std::string& message) {
   if (gmsh::fltk::isAvailable())
@@ -86,18 +90,21 @@ void gui_initialize(const std::vector<std::string>& args) {
   std::vector<char*> argv;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
-  gmsh_checked("cannot start Gmsh", [&] {
-    gmsh::initialize(static_cast<int>(args.size()), argv.data(), true);
-  });
+  gmsh_checked("cannot start Gmsh",
+               [&] { gmsh::initialize(static_cast<int>(args.size()), argv.data(), true); });
 }
 
-void gui_finalize() { gmsh::finalize(); }
+void gui_finalize() {
+  gmsh::finalize();
+}
 
 void gui_open(const std::string& path) {
   gmsh_checked("cannot open '" + path + "'", [&] { gmsh::open(path); });
 }
 
-int gui_model_dim() { return gmsh::model::getDimension(); }
+int gui_model_dim() {
+  return gmsh::model::getDimension();
+}
 
 void gui_set_button(const std::string& label, const std::string& action) {
   // Two values, [label, action], always (ONELAB updates values index by index).
@@ -132,8 +139,11 @@ void gui_post_action(const std::string& action) {
   if (gmsh::fltk::isAvailable()) gmsh::fltk::awake("update");
 }
 
-void gui_start() {
-  gmsh_checked("cannot open the Gmsh window (is DISPLAY set?)", [] {
+void gui_start(int min_menu_width) {
+  gmsh_checked("cannot open the Gmsh window (is DISPLAY set?)", [&] {
+    double w = 0;
+    gmsh::option::getNumber("General.MenuWidth", w);
+    if (w < min_menu_width) gmsh::option::setNumber("General.MenuWidth", min_menu_width);
     gmsh::fltk::initialize();
     if (!gmsh::fltk::isAvailable()) throw InputError("no graphical user interface available");
   });
@@ -145,10 +155,16 @@ bool gui_wait(double seconds) {
   return gmsh::fltk::isAvailable() != 0;
 }
 
-void gui_awake() { gmsh::fltk::awake("update"); }
+void gui_awake() {
+  gmsh::fltk::awake("update");
+}
 
-GuiLock::GuiLock() { gmsh::fltk::lock(); }
-GuiLock::~GuiLock() { gmsh::fltk::unlock(); }
+GuiLock::GuiLock() {
+  gmsh::fltk::lock();
+}
+GuiLock::~GuiLock() {
+  gmsh::fltk::unlock();
+}
 
 void gui_refresh() {
   if (!gmsh::fltk::isAvailable()) return;
@@ -162,12 +178,30 @@ void gui_refresh() {
   gmsh::graphics::draw();
 }
 
-void gui_show_view(int tag) {
+void gui_show_view(int tag, double vmin, double vmax, bool cut) {
   std::vector<int> tags;
   gmsh::view::getTags(tags);
   for (int t : tags) {
     const std::string v = "View[" + std::to_string(gmsh::view::getIndex(t)) + "].";
     gmsh::option::setNumber(v + "Visible", t == tag ? 1 : 0);
+    if (t != tag) continue;
+    if (vmax > vmin) {
+      gmsh::option::setNumber(v + "RangeType", 2);  // custom
+      gmsh::option::setNumber(v + "CustomMin", vmin);
+      gmsh::option::setNumber(v + "CustomMax", vmax);
+    }
+    gmsh::option::setNumber(v + "Clip", cut ? 1 : 0);
+  }
+  if (cut && gmsh::model::getDimension() == 3) {
+    double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+    gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+    // Keep x <= centre: -x + centre >= 0.
+    gmsh::option::setNumber("General.Clip0A", -1);
+    gmsh::option::setNumber("General.Clip0B", 0);
+    gmsh::option::setNumber("General.Clip0C", 0);
+    gmsh::option::setNumber("General.Clip0D", 0.5 * (x0 + x1));
+    gmsh::option::setNumber("General.ClipWholeElements", 1);
+    gmsh::option::setNumber("Mesh.Clip", 1);
   }
   if (gmsh::fltk::isAvailable()) {
     gmsh::fltk::update();

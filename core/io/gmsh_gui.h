@@ -76,8 +76,9 @@ void gui_set_button(const std::string& label, const std::string& action);
 std::string gui_take_action();
 // Posts an action as if a button had been pressed (wakes the event loop up).
 void gui_post_action(const std::string& action);
-// Opens the window. Throws InputError if there is no display.
-void gui_start();
+// Opens the window, the menu tree at least min_menu_width pixels wide (ONELAB labels are clipped
+// otherwise). Throws InputError if there is no display.
+void gui_start(int min_menu_width = 0);
 // Processes events for at most `seconds` (< 0: until one arrives). False once the window is closed.
 bool gui_wait(double seconds = -1);
 // From another thread: ask the event loop to wake up; lock around GUI calls from that thread.
@@ -92,7 +93,10 @@ class GuiLock {
 // Redraws the model after its mesh was replaced (Gmsh does not notice node moves by itself) and
 // refreshes the ONELAB tree.
 void gui_refresh();
-// Shows the view `tag` alone (other views of the model hidden), coloured per element.
-void gui_show_view(int tag);
+// Shows the view `tag` alone (the other views hidden), coloured per element over [vmin, vmax]
+// (vmax <= vmin: the view's own range). With cut, a 3D model is clipped by the plane x = centre of
+// its bounding box, whole elements kept, so that the quality inside shows and not only on the
+// boundary (Tools > Clipping turns it off).
+void gui_show_view(int tag, double vmin = 0, double vmax = 0, bool cut = false);
 
 }  // namespace cvtmesh

@@ -62,7 +62,7 @@ MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
       throw InputError(what + " is empty: open or build a model (gmsh.open(...)) first");
     if (!options.generate)
       throw InputError(what + " has no mesh: generate it first (gmsh.model.mesh.generate(" +
-                       std::to_string(model_dim) + ")) or ask for generate=true");
+                       std::to_string(model_dim) + ")) or pass generate=True");
     gmsh_checked("cannot mesh " + what, [&] {
       gmsh::model::mesh::generate(options.dim > 0 ? options.dim : model_dim);
       have = meshed_dim();
@@ -82,7 +82,8 @@ GmshOptimizeResult gmsh_write_back(const MeshData& data, const OptimizeResult& r
   const GmshWritten written = replace_gmsh_mesh(data);
   // Views of an earlier run refer to elements that no longer exist.
   remove_quality_views();
-  if (options.quality_views) out.views = add_element_views(quality_fields(data), written.element_tags);
+  if (options.quality_views)
+    out.views = add_element_views(quality_fields(data), written.element_tags);
   return out;
 }
 
@@ -96,8 +97,7 @@ void remove_quality_views() {
     gmsh::view::getTags(tags);
     for (int tag : tags) {
       std::string name;
-      gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(tag)) + "].Name",
-                              name);
+      gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(tag)) + "].Name", name);
       if (std::find(ours.begin(), ours.end(), name) != ours.end()) gmsh::view::remove(tag);
     }
   });
@@ -109,7 +109,8 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
   const MeshData data = gmsh_read_current(options);
   GmshSession session;
   GmshQualityResult out;
-  out.stats = data.dim == 3 ? quality_stats(data.tet, "current") : quality_stats(data.tri, "current");
+  out.stats =
+      data.dim == 3 ? quality_stats(data.tet, "current") : quality_stats(data.tri, "current");
   if (options.quality_views) {
     remove_quality_views();
     out.views = add_element_views(quality_fields(data),
@@ -120,8 +121,16 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
 
 GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
   MeshData data = gmsh_read_current(options);
-  const OptimizeResult r = optimize(data, options.optimize);
-  return gmsh_write_back(data, r, options);
+  GmshOptimizeOptions o = options;
+  if (o.optimize.method.empty()) {
+    const auto methods = methods_for_dim(data.dim);
+    if (methods.empty())
+      throw InputError("no optimization method is available for " + std::to_string(data.dim) +
+                       "D meshes in this build");
+    o.optimize.method = methods.front();
+  }
+  const OptimizeResult r = optimize(data, o.optimize);
+  return gmsh_write_back(data, r, o);
 }
 
 QualityTable GmshOptimizeResult::table() const {

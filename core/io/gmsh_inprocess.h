@@ -18,17 +18,18 @@
 namespace cvtmesh {
 
 struct GmshOptimizeOptions {
-  OptimizeOptions optimize;     // method, iterations, tolerance, sizing, seed, progress
-  int dim = -1;                 // 3: volumes, 2: planar surfaces, -1: highest dimension meshed
-  bool generate = false;        // mesh the model first (gmsh generate(model dim)) if it has no mesh
-  bool quality_views = false;   // add ElementData views (Q, radius ratio, min angle) on the result
+  OptimizeOptions optimize;    // method, iterations, tolerance, sizing, seed, progress; an
+                               // empty method: the first of methods_for_dim(mesh dimension)
+  int dim = -1;                // 3: volumes, 2: planar surfaces, -1: highest dimension meshed
+  bool generate = false;       // mesh the model first (gmsh generate(model dim)) if it has no mesh
+  bool quality_views = false;  // add ElementData views (Q, radius ratio, min angle) on the result
 };
 
 struct GmshOptimizeResult {
-  OptimizeResult result;        // before/after statistics, iterations, converged, seconds
+  OptimizeResult result;  // before/after statistics, iterations, converged, seconds
   std::string method;
   int dim = 0;
-  std::vector<int> views;       // tags of the quality views added (empty unless asked for)
+  std::vector<int> views;  // tags of the quality views added (empty unless asked for)
 
   // The paper's table: column "Init" (before) and the method's column (after, with the rows
   // iterations, converged and seconds).
