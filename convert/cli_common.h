@@ -48,5 +48,7 @@ std::string render(const QualityTable& t, const std::string& format);
 void register_stats(CLI::App& app);
 void register_convert(CLI::App& app);
 void register_optimize(CLI::App& app);
+void register_mesh(CLI::App& app);
+void register_compare(CLI::App& app);
 
 }  // namespace cvtmesh::cli

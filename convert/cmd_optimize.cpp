@@ -18,6 +18,9 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
   c->add_option("--sizing", o.sizing,
                 "sizing field for the density: mesh (input's local edge length) or uniform")
       ->check(CLI::IsMember({"mesh", "uniform"}));
+  c->add_option("--relaxation", o.relaxation,
+                "Lloyd over-relaxation omega in (0,2); 1 = plain Lloyd")
+      ->check(CLI::Range(0.05, 1.95));
   c->add_option("--seed", o.seed, "random seed (methods that use randomness)");
 }
 

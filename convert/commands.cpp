@@ -10,6 +10,8 @@ void register_commands(CLI::App& app) {
   register_stats(app);
   register_convert(app);
   register_optimize(app);
+  register_mesh(app);
+  register_compare(app);
 }
 
 int run_selected(CLI::App& app) {

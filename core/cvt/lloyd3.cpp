@@ -116,7 +116,7 @@ class Lloyd3Problem {
       bool ok = false;
       for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
         double x[3];
-        for (int d = 0; d < 3; ++d) x[d] = z[d] + t * (c[d] - z[d]);
+        for (int d = 0; d < 3; ++d) x[d] = z[d] + t * o_.relaxation * (c[d] - z[d]);
         const LocateResult r = locate_point(m_, x, star.tet[star.offset[v]], &constrained, 100000);
         if (r.status == LocateStatus::kInside) {
           for (int d = 0; d < 3; ++d) target[3 * v + d] = x[d];

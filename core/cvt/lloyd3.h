@@ -23,6 +23,10 @@ struct Lloyd3Options {
   // A target centroid whose straight move would leave the region is pulled back towards the
   // vertex (halved up to this many times; the vertex stays put if still outside).
   int max_halvings = 4;
+  // Over-relaxation: move to z + omega (c - z). omega = 1 is the paper's Lloyd step; any omega in
+  // (0, 2) still decreases the energy for the current partition (|1 - omega| < 1), so the
+  // iteration stays monotone, and omega around 1.5-1.8 converges several times faster.
+  double relaxation = 1.0;
 };
 
 // Runs the iteration on `mesh` (valid on entry; valid, with the same constrained triangles, on

@@ -3,27 +3,34 @@
 #include <gmsh.h>
 
 #include <exception>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "core/util/error.h"
 
 namespace cvtmesh {
+namespace {
+
+std::mutex g_mutex;
+bool g_external = false;
+int g_depth = 0;  // nesting depth of our own sessions
+
+}  // namespace
+
+void set_gmsh_initialized_by_caller(bool yes) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  g_external = yes;
+}
 
 GmshSession::GmshSession() {
-  // Gmsh 4.8 has no isInitialized(); before initialize() option getters leave their output
-  // untouched, after it General.BuildInfo is never empty.
-  bool initialized = false;
-  try {
-    std::string info;
-    gmsh::option::getString("General.BuildInfo", info);
-    initialized = !info.empty();
-    if (initialized) gmsh::option::getNumber("General.Terminal", terminal_);
-  } catch (...) {
-    initialized = false;
-  }
-  if (!initialized) {
-    gmsh::initialize(0, nullptr, false);
+  std::lock_guard<std::mutex> lock(g_mutex);
+  if (g_external) {
+    owns_ = false;
+    gmsh::option::getNumber("General.Terminal", terminal_);
+  } else {
+    if (g_depth == 0) gmsh::initialize(0, nullptr, false);
+    ++g_depth;
     owns_ = true;
     terminal_ = 0;
   }
@@ -32,12 +39,16 @@ GmshSession::GmshSession() {
 }
 
 GmshSession::~GmshSession() {
+  std::lock_guard<std::mutex> lock(g_mutex);
   try {
-    gmsh::logger::stop();
-    if (owns_)
-      gmsh::finalize();
-    else
+    if (owns_) {
+      if (--g_depth == 0) {
+        gmsh::logger::stop();
+        gmsh::finalize();
+      }
+    } else {
       gmsh::option::setNumber("General.Terminal", terminal_);
+    }
   } catch (...) {
   }
 }

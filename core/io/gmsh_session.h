@@ -1,11 +1,18 @@
-// The Gmsh SDK is a process-wide singleton. GmshSession initializes it when needed (and then
-// finalizes it), or reuses the caller's session (in-process Python/C++ scripting), silencing the
-// terminal and capturing the log so that errors become typed exceptions.
+// The Gmsh SDK is a process-wide singleton. GmshSession initializes it for the duration of a
+// scope (nested sessions share one initialization), silences the terminal and captures the log so
+// that errors become typed exceptions. Front ends that run inside a program which initialized Gmsh
+// itself (Python `import gmsh`, the GUI) declare it with set_gmsh_initialized_by_caller(true):
+// then sessions never initialize or finalize.
+//
+// Gmsh 4.8 has no isInitialized(), and calling any API function before initialize() corrupts its
+// option defaults (the optimizer silently does nothing afterwards), so this cannot be probed.
 #pragma once
 #include <functional>
 #include <string>
 
 namespace cvtmesh {
+
+void set_gmsh_initialized_by_caller(bool yes);
 
 class GmshSession {
  public:
@@ -13,6 +20,8 @@ class GmshSession {
   ~GmshSession();
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
+  // True if this session (or an enclosing one of ours) initialized Gmsh: the models it creates
+  // can be discarded freely; false inside a caller's Gmsh (do not touch the caller's models).
   bool owns() const { return owns_; }
 
  private:

@@ -47,6 +47,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   Lloyd3Options lo;
   lo.lloyd.max_iterations = o.max_iterations;
   lo.lloyd.tolerance = o.tolerance;
+  lo.relaxation = o.relaxation;
   lo.sizing = sizing3(mesh, o);
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
     if (o.progress) report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""));

@@ -22,6 +22,7 @@ struct OptimizeOptions {
   std::string method = "cvdt+swap";
   int max_iterations = 100;  // Lloyd / outer iterations
   double tolerance = 1e-5;   // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
+  double relaxation = 1.0;   // Lloyd over-relaxation omega in (0, 2); 1 = the paper's step
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";
