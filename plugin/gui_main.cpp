@@ -143,11 +143,16 @@ class App {
     define(args_.preset);
     gui_set_button("Run", kRun);
     gui_start(300);
-    if (args_.show_quality) gui_post_action(kQuality);
-    if (args_.run_on_start) gui_post_action(kRun);
+    // Start-up actions, one at a time (ONELAB/Action holds a single action).
+    if (args_.show_quality) pending_.push_back(kQuality);
+    if (args_.run_on_start) pending_.push_back(kRun);
     while (gui_wait(0.25)) {
       if (exit_at_ && elapsed() >= *exit_at_) break;
-      const std::string action = gui_take_action();
+      std::string action = gui_take_action();
+      if (action.empty() && !pending_.empty() && !job_.running) {
+        action = pending_.front();
+        pending_.erase(pending_.begin());
+      }
       if (action == kRun || action == kDone) action_ = "optimize";
       if (action == kQuality) action_ = "quality";
       try {
@@ -164,7 +169,9 @@ class App {
         else if (!job_.running && gui_model_dim() != dim_ && gui_model_dim() > 0)
           define({});
       } catch (const std::exception& e) {
-        report_error(e.what());
+        report_error(std::string("cvtmesh: ") + e.what());
+      } catch (...) {
+        report_error("cvtmesh: unexpected error");
       }
     }
     if (job_.thread.joinable()) {
@@ -202,6 +209,7 @@ class App {
       gui_awake();
     };
     tree_.info("cvtmesh: optimizing with " + job_.options.optimize.method + "...");
+    write_json("optimize", "status", "running");
     gui_set_button("Stop", kStop);
     gui_refresh();
     job_.thread = std::thread([this] {
@@ -300,6 +308,7 @@ class App {
   LocalOnelab tree_;
   Job job_;
   int dim_ = -1;
+  std::vector<std::string> pending_;
   std::string action_ = "optimize";  // what an error is reported against
   int exit_status_ = 0;
   std::optional<double> exit_at_;
@@ -339,6 +348,9 @@ int main(int argc, char** argv) {
     status = app.run();
   } catch (const std::exception& e) {
     std::cerr << "cvtmesh-gui: " << e.what() << "\n";
+    status = 2;
+  } catch (...) {
+    std::cerr << "cvtmesh-gui: unexpected error\n";
     status = 2;
   }
   gui_finalize();

@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include "core/io/gmsh_inprocess.h"
+#include "core/io/gmsh_session.h"
 #include "core/pipeline/optimize.h"
 #include "core/util/error.h"
 
@@ -26,12 +27,14 @@ py::object json_loads(const std::string& text) {
 }
 
 GmshOptimizeOptions options_from(const std::string& method, int max_iterations, double tolerance,
-                                 const std::string& sizing, unsigned seed, int dim,
-                                 bool quality_views, bool generate, const py::object& progress) {
+                                 double relaxation, const std::string& sizing, unsigned seed,
+                                 int dim, bool quality_views, bool generate,
+                                 const py::object& progress) {
   GmshOptimizeOptions o;
   o.optimize.method = method;
   o.optimize.max_iterations = max_iterations;
   o.optimize.tolerance = tolerance;
+  o.optimize.relaxation = relaxation;
   o.optimize.sizing = sizing;
   o.optimize.seed = seed;
   o.dim = dim;
@@ -62,6 +65,9 @@ PYBIND11_MODULE(cvtmesh, m) {
       "Use with Debian's python3-gmsh: import gmsh, cvtmesh; gmsh.initialize(); gmsh.open(...);\n"
       "gmsh.model.mesh.generate(3); cvtmesh.optimize(method='cvdt+swap').";
   m.attr("__version__") = CVTMESH_VERSION;
+  // The Gmsh of this process is Python's (gmsh.initialize()); cvtmesh never initializes or
+  // finalizes it. (Gmsh 4.8 cannot be asked whether it is initialized.)
+  set_gmsh_initialized_by_caller(true);
 
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<OutputError> output_error(m, "OutputError", PyExc_OSError);
@@ -84,22 +90,25 @@ PYBIND11_MODULE(cvtmesh, m) {
 
   m.def(
       "optimize",
-      [](const std::string& method, int max_iterations, double tolerance, const std::string& sizing,
-         unsigned seed, int dim, bool quality_views, bool generate, const py::object& progress) {
-        const auto o = options_from(method, max_iterations, tolerance, sizing, seed, dim,
-                                    quality_views, generate, progress);
+      [](const std::string& method, int max_iterations, double tolerance, double relaxation,
+         const std::string& sizing, unsigned seed, int dim, bool quality_views, bool generate,
+         const py::object& progress) {
+        const auto o = options_from(method, max_iterations, tolerance, relaxation, sizing, seed,
+                                    dim, quality_views, generate, progress);
         return json_loads(gmsh_optimize(o).to_json());
       },
       py::kw_only(), py::arg("method") = "",
       py::arg("max_iterations") = OptimizeOptions{}.max_iterations,
       py::arg("tolerance") = OptimizeOptions{}.tolerance,
+      py::arg("relaxation") = OptimizeOptions{}.relaxation,
       py::arg("sizing") = OptimizeOptions{}.sizing, py::arg("seed") = 0u, py::arg("dim") = -1,
       py::arg("quality_views") = false, py::arg("generate") = false,
       py::arg("progress") = py::none(),
       "Optimizes the mesh of the current Gmsh model in place: every volume (3D) or every planar\n"
       "surface (2D) with method (one of methods(dim); '' = the first, the paper's best) —\n"
       "dim=-1 picks the highest meshed dimension. Entities, physical groups and\n"
-      "lower-dimensional elements stay. generate=True meshes the model first if it has no mesh;\n"
+      "lower-dimensional elements stay. relaxation: Lloyd over-relaxation in (0, 2). generate=True "
+      "meshes the model first if it has no mesh;\n"
       "quality_views=True adds per-element views (Q, radius ratio, min angle). progress, if\n"
       "given, is called with a dict (phase, iteration, D, energy, q_min, q_avg).\n"
       "Returns the paper's table as a dict: method, dim, iterations, converged, seconds, views,\n"

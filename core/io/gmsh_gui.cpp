@@ -2,7 +2,9 @@
 
 #include <gmsh.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
+#include <system_error>
 
 #include "core/io/gmsh_session.h"
 #include "core/util/error.h"
@@ -76,7 +78,16 @@ void LocalOnelab::info(const std::string& message) {
 }
 
 void LocalOnelab::error(const std::string& message) {
-  gmsh::logger::write(message, "error");
+  // With General.AbortOnError = 2 (the SDK's default) Gmsh throws the message back at us when no
+  // GUI is running: a report must not become an exception.
+  double abort = 0;
+  gmsh::option::getNumber("General.AbortOnError", abort);
+  gmsh::option::setNumber("General.AbortOnError", 0);
+  try {
+    gmsh::logger::write(message, "error");
+  } catch (...) {
+  }
+  gmsh::option::setNumber("General.AbortOnError", abort);
 }
 
 void LocalOnelab::progress(const std::string& message) {
@@ -92,6 +103,7 @@ void gui_initialize(const std::vector<std::string>& args) {
   argv.push_back(nullptr);
   gmsh_checked("cannot start Gmsh",
                [&] { gmsh::initialize(static_cast<int>(args.size()), argv.data(), true); });
+  set_gmsh_initialized_by_caller(true);  // our sessions use this Gmsh, never re-initialize it
 }
 
 void gui_finalize() {
@@ -99,6 +111,10 @@ void gui_finalize() {
 }
 
 void gui_open(const std::string& path) {
+  // Gmsh would silently start a new, empty model for a missing file.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError("cannot open '" + path + "': no such file");
   gmsh_checked("cannot open '" + path + "'", [&] { gmsh::open(path); });
 }
 

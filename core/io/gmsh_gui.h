@@ -66,7 +66,8 @@ std::string onelab_json(const std::vector<OnelabParam>& params);
 // -setnumber may follow). Throws InputError if Gmsh rejects it.
 void gui_initialize(const std::vector<std::string>& args);
 void gui_finalize();
-// Opens a model or mesh file as the current model (gmsh::open). Throws InputError.
+// Opens a model or mesh file as the current model (gmsh::open). Throws InputError (also for a
+// missing file, which Gmsh itself would silently take as a new model).
 void gui_open(const std::string& path);
 // The dimension of the current model (its highest entity dimension), -1 if empty.
 int gui_model_dim();

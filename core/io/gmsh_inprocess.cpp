@@ -45,11 +45,8 @@ std::vector<std::string> quality_view_names(int dim) {
 }
 
 MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
+  set_gmsh_initialized_by_caller(true);
   GmshSession session;
-  if (session.owns())
-    throw InputError(
-        "no Gmsh model to optimize: call gmsh::initialize() (Python: gmsh.initialize()) and "
-        "open or build a model first");
   std::string what;
   int have = -1, model_dim = -1;
   gmsh_checked("cannot inspect the current Gmsh model", [&] {
@@ -59,7 +56,9 @@ MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
   });
   if (have < 0) {
     if (model_dim < 1)
-      throw InputError(what + " is empty: open or build a model (gmsh.open(...)) first");
+      throw InputError(what +
+                       " is empty: call gmsh.initialize() and open or build a model "
+                       "(gmsh.open(...)) first");
     if (!options.generate)
       throw InputError(what + " has no mesh: generate it first (gmsh.model.mesh.generate(" +
                        std::to_string(model_dim) + ")) or pass generate=True");
@@ -74,6 +73,7 @@ MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
 
 GmshOptimizeResult gmsh_write_back(const MeshData& data, const OptimizeResult& result,
                                    const GmshOptimizeOptions& options) {
+  set_gmsh_initialized_by_caller(true);
   GmshSession session;
   GmshOptimizeResult out;
   out.result = result;

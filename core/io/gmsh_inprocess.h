@@ -4,9 +4,10 @@
 // nodes and elements back into the same model (entities, physical groups and lower-dimensional
 // elements intact) and optionally adds per-element quality views.
 //
-// Uses the caller's Gmsh session (gmsh::initialize() must have been called, e.g. by Python's
-// `gmsh.initialize()`); starts a private one only if there is none, in which case there is no model
-// to optimize and InputError is thrown.
+// The caller owns Gmsh: it called gmsh::initialize() (Python: gmsh.initialize()) and loaded a
+// model. These functions declare it to the rest of cvtmesh (set_gmsh_initialized_by_caller(true),
+// core/io/gmsh_session.h), so that nothing of ours initializes or finalizes that Gmsh; a program
+// that finalizes Gmsh and then uses cvtmesh's file I/O must set it back to false.
 #pragma once
 #include <string>
 #include <vector>
