@@ -21,6 +21,12 @@ ReadOptions InputOpts::to_read_options() const {
       throw CLI::ValidationError("--set", "expected a number in '" + s + "'");
     }
   }
+  for (const auto& s : set_strings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos)
+      throw CLI::ValidationError("--set-string", "expected NAME=VALUE, got '" + s + "'");
+    r.set_strings.push_back({s.substr(0, eq), s.substr(eq + 1)});
+  }
   return r;
 }
 
@@ -32,6 +38,8 @@ void add_input(CLI::App* c, InputOpts& in) {
       ->check(CLI::IsMember({-1, 2, 3}));
   c->add_option("--set", in.set_numbers,
                 "NAME=VALUE: set a .geo parameter before meshing (like gmsh -setnumber)");
+  c->add_option("--set-string", in.set_strings,
+                "NAME=VALUE: set a .geo string parameter (like gmsh -setstring)");
   c->add_option("--size-factor", in.size_factor, "Gmsh Mesh.MeshSizeFactor when a model is meshed");
 }
 

@@ -24,6 +24,7 @@ struct InputOpts {
   std::string path;
   int dim = -1;
   std::vector<std::string> set_numbers;
+  std::vector<std::string> set_strings;
   double size_factor = 0;
   ReadOptions to_read_options() const;
 };
@@ -50,5 +51,6 @@ void register_convert(CLI::App& app);
 void register_optimize(CLI::App& app);
 void register_mesh(CLI::App& app);
 void register_compare(CLI::App& app);
+void register_check(CLI::App& app);
 
 }  // namespace cvtmesh::cli

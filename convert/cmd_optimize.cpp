@@ -1,4 +1,5 @@
-// cvtmesh optimize IN -o OUT --method cvdt+swap|cvdt|combined|swap (3D), cvdt|dl|wdl (2D).
+// cvtmesh optimize IN -o OUT --method cvdt+swap+smooth|cvdt+swap|cvdt|combined|swap (3D),
+// cvdt|dl|wdl (2D).
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -9,8 +10,9 @@
 namespace cvtmesh::cli {
 
 void add_method_options(CLI::App* c, OptimizeOptions& o) {
-  c->add_option("--method,-m", o.method,
-                "cvdt+swap (default), cvdt, combined, swap (3D); cvdt, dl, wdl (2D)");
+  c->add_option(
+      "--method,-m", o.method,
+      "cvdt+swap+smooth (default), cvdt+swap, cvdt, combined, swap (3D); cvdt, dl, wdl (2D)");
   c->add_option("--max-iterations", o.max_iterations, "maximum Lloyd / outer iterations")
       ->check(CLI::NonNegativeNumber);
   c->add_option("--tolerance", o.tolerance, "stop when the mean squared move / h^2 is below this")
@@ -21,6 +23,9 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
   c->add_option("--relaxation", o.relaxation,
                 "Lloyd over-relaxation omega in (0,2); 1 = plain Lloyd")
       ->check(CLI::Range(0.05, 1.95));
+  c->add_option("--anderson", o.anderson_depth,
+                "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
+      ->check(CLI::Range(0, 20));
   c->add_option("--seed", o.seed, "random seed (methods that use randomness)");
 }
 
@@ -41,8 +46,9 @@ void register_optimize(CLI::App& app) {
          MeshData d = read_mesh(in->path, in->to_read_options());
          if (!*quiet)
            opt->progress = [](const OptimizeProgress& p) {
-             std::fprintf(stderr, "%-9s it %4d  D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f\n",
-                          p.phase.c_str(), p.iteration, p.D, p.energy, p.q_min, p.q_avg);
+             std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f\n",
+                          p.phase.c_str(), p.iteration, p.restarted ? "*" : " ", p.D, p.energy,
+                          p.q_min, p.q_avg);
            };
          const OptimizeResult r = optimize(d, *opt);
          write_mesh(d, out->path, out->to_write_options(d, in->path));

@@ -12,6 +12,7 @@ void register_commands(CLI::App& app) {
   register_optimize(app);
   register_mesh(app);
   register_compare(app);
+  register_check(app);
 }
 
 int run_selected(CLI::App& app) {

@@ -20,3 +20,5 @@ Physical Volume("bone", 2) = {1};
 Mesh.MeshSizeMin = 0;
 Mesh.MeshSizeMax = h;
 Mesh.MeshSizeFromCurvature = 0;
+// Delaunay for the re-parametrized patches: as good here and ~20x faster than Frontal-Delaunay.
+Mesh.Algorithm = 5;

@@ -18,10 +18,11 @@ struct LloydOptions {
 // What one Lloyd iteration reports.
 struct LloydStep {
   int iteration = 0;
-  double D = 0;        // normalised displacement to the centroids (see LloydOptions)
-  double energy = 0;   // CVT energy F = sum_i int_{V_i} rho |x - z_i|^2 before the move
-  int nb_free = 0;     // generators allowed to move
-  int nb_limited = 0;  // moves shortened by a safeguard (target outside the domain, ...)
+  double D = 0;            // normalised displacement to the centroids (see LloydOptions)
+  double energy = 0;       // CVT energy F = sum_i int_{V_i} rho |x - z_i|^2 before the move
+  int nb_free = 0;         // generators allowed to move
+  int nb_limited = 0;      // moves shortened by a safeguard (target outside the domain, ...)
+  bool restarted = false;  // an accelerated step was rejected (energy rose): plain step taken
 };
 
 struct LloydResult {

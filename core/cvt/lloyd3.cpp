@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/cvt/anderson.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/delaunay/delaunay3.h"
 #include "core/mesh/check_mesh.h"
@@ -78,6 +79,7 @@ class Lloyd3Problem {
     else
       sizing_ = std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
     hints_.assign(m_.nb_vertices(), -1);
+    mixer_ = AndersonMixer(o_.anderson_depth);
   }
 
   LloydStep step() {
@@ -89,7 +91,9 @@ class Lloyd3Problem {
     const double eps = coordinate_eps(m_);
     vertex_density(m_, *sizing_, hints_, H_, rho_);
     const std::vector<double> cc = tet_circumcenters(m_);
-    std::vector<double> target(m_.xyz);
+    // Cells of the current configuration: energy, centroids of the free vertices, D.
+    std::vector<int> free_ids;
+    std::vector<double> z_free, c_free;
     double dsum = 0;
     for (int v = 0; v < nv; ++v) {
       const bool free_v = m_.vclass[v].dim == 3 && star.offset[v] < star.offset[v + 1];
@@ -104,31 +108,60 @@ class Lloyd3Problem {
       s.energy += ci.energy;
       if (!free_v) continue;
       ++s.nb_free;
-      const Vec3 cv = ci.centroid(z);
-      const double c[3] = {cv[0], cv[1], cv[2]};
-      const double H = H_[v];
-      if (!(ci.mass > 0) || !std::isfinite(c[0] + c[1] + c[2])) continue;
+      Vec3 c = ci.centroid(z);
+      if (!(ci.mass > 0) || !std::isfinite(c[0] + c[1] + c[2])) c = vec3(z);
       // D uses the full move to the centroid (the paper's P_i - P*_i).
-      dsum += dist2(z, c) / (H * H);
-      // Safeguard: the target must lie in the vertex's region, reachable without crossing the
-      // boundary or an interface; otherwise pull it back towards z.
-      double t = 1.0;
-      bool ok = false;
-      for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
-        double x[3];
-        for (int d = 0; d < 3; ++d) x[d] = z[d] + t * o_.relaxation * (c[d] - z[d]);
-        const LocateResult r = locate_point(m_, x, star.tet[star.offset[v]], &constrained, 100000);
-        if (r.status == LocateStatus::kInside) {
-          for (int d = 0; d < 3; ++d) target[3 * v + d] = x[d];
-          ok = true;
-          break;
-        }
-      }
-      if (!ok || t < 1.0) ++s.nb_limited;
+      dsum += dist2(z, c.data()) / (H_[v] * H_[v]);
+      free_ids.push_back(v);
+      z_free.insert(z_free.end(), z, z + 3);
+      c_free.insert(c_free.end(), c.begin(), c.end());
     }
     s.D = s.nb_free ? dsum / s.nb_free : 0.0;
+
+    std::vector<double> target(m_.xyz);
+    const bool accelerated = o_.anderson_depth > 0;
+    if (accelerated && have_accepted_ && !last_was_fallback_ && free_ids == accepted_free_ &&
+        s.energy > accepted_energy_ * (1 + 1e-12)) {
+      // The accelerated step raised the energy: go back to the last accepted configuration and
+      // take the plain (relaxed) Lloyd step from there instead. The energy stays monotone.
+      s.restarted = true;
+      last_was_fallback_ = true;
+      mixer_.reset();
+      target = accepted_xyz_;
+      for (std::size_t i = 0; i < accepted_free_.size(); ++i)
+        for (int d = 0; d < 3; ++d) target[3 * accepted_free_[i] + d] = accepted_plain_[3 * i + d];
+      m_.xyz = accepted_xyz_;
+      // The mesh of accepted_xyz_ is gone: the move safeguards ran when the plain targets were
+      // computed, on that mesh.
+    } else {
+      // Plain relaxed Lloyd targets (kept for a restart), then the accelerated ones.
+      std::vector<double> plain(z_free.size());
+      for (std::size_t i = 0; i < free_ids.size(); ++i) {
+        double goal[3];
+        for (int d = 0; d < 3; ++d)
+          goal[d] = z_free[3 * i + d] + o_.relaxation * (c_free[3 * i + d] - z_free[3 * i + d]);
+        if (!safe_target(free_ids[i], goal, star, constrained, &plain[3 * i])) ++s.nb_limited;
+      }
+      std::vector<double> next = plain;
+      if (accelerated) {
+        if (free_ids != accepted_free_) mixer_.reset();
+        std::vector<double> g(c_free.size());
+        for (std::size_t k = 0; k < g.size(); ++k)
+          g[k] = z_free[k] + o_.relaxation * (c_free[k] - z_free[k]);
+        const std::vector<double> mixed = mixer_.next(z_free, g);
+        for (std::size_t i = 0; i < free_ids.size(); ++i)
+          safe_target(free_ids[i], &mixed[3 * i], star, constrained, &next[3 * i]);
+      }
+      have_accepted_ = true;
+      last_was_fallback_ = false;
+      accepted_energy_ = s.energy;
+      accepted_xyz_ = m_.xyz;
+      accepted_free_ = free_ids;
+      accepted_plain_ = plain;
+      for (std::size_t i = 0; i < free_ids.size(); ++i)
+        for (int d = 0; d < 3; ++d) target[3 * free_ids[i] + d] = next[3 * i + d];
+    }
     // Move and re-triangulate.
-    const std::vector<double> old_xyz = m_.xyz;
     m_.xyz = target;
     const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
     nb_steiner_ += ds.nb_steiner;
@@ -139,6 +172,26 @@ class Lloyd3Problem {
   int nb_steiner() const { return nb_steiner_; }
 
  private:
+  // The move of v towards `goal`, shortened (halved) until the point lies in v's region and is
+  // reachable from v's star without crossing the boundary or an interface. Writes the position
+  // (v's own if every try failed); returns false if the move was shortened.
+  bool safe_target(int v, const double* goal, const VertexStar& star,
+                   const std::vector<char>& constrained, double* out) const {
+    const double* z = m_.point(v);
+    double t = 1.0;
+    for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
+      double x[3];
+      for (int d = 0; d < 3; ++d) x[d] = z[d] + t * (goal[d] - z[d]);
+      const LocateResult r = locate_point(m_, x, star.tet[star.offset[v]], &constrained, 100000);
+      if (r.status == LocateStatus::kInside) {
+        for (int d = 0; d < 3; ++d) out[d] = x[d];
+        return h == 0;
+      }
+    }
+    for (int d = 0; d < 3; ++d) out[d] = z[d];
+    return false;
+  }
+
   void verify_after_step() {
     const MeshCheck c = check_mesh(m_);
     if (!c.ok)
@@ -163,6 +216,15 @@ class Lloyd3Problem {
   std::vector<double> H_, rho_;
   int nb_steiner_ = 0;
   long nb_dual_ = 0;
+  AndersonMixer mixer_{0};
+  bool have_accepted_ = false;
+  // The plain step taken after a restart is accepted whatever its energy (the density is P1 on
+  // the current mesh, so the energy is not exactly monotone even for plain Lloyd): no endless
+  // restarts.
+  bool last_was_fallback_ = false;
+  double accepted_energy_ = 0;
+  std::vector<double> accepted_xyz_, accepted_plain_;
+  std::vector<int> accepted_free_;
 };
 
 }  // namespace

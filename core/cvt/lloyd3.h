@@ -27,6 +27,9 @@ struct Lloyd3Options {
   // (0, 2) still decreases the energy for the current partition (|1 - omega| < 1), so the
   // iteration stays monotone, and omega around 1.5-1.8 converges several times faster.
   double relaxation = 1.0;
+  // Anderson acceleration depth (0 = plain Lloyd). An accelerated step that raises the energy is
+  // undone and replaced by the plain step, so the accepted energies never increase.
+  int anderson_depth = 0;
 };
 
 // Runs the iteration on `mesh` (valid on entry; valid, with the same constrained triangles, on

@@ -5,99 +5,108 @@
 
 namespace cvtmesh {
 
-Polytope tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3) {
+void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3,
+                  Polytope& p) {
   const Vec3 v[4] = {vec3(p0), vec3(p1), vec3(p2), vec3(p3)};
   static const int F[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  Polytope p;
+  p.clear();
   for (int f = 0; f < 4; ++f) {
-    p.faces.push_back({v[F[f][0]], v[F[f][1]], v[F[f][2]]});
+    for (int k = 0; k < 3; ++k) p.pts.push_back(v[F[f][k]]);
+    p.face_start.push_back(static_cast<int>(p.pts.size()));
     p.face_id.push_back(f);
   }
-  return p;
 }
 
-bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps) {
+namespace {
+
+// A cheap monotone stand-in for atan2 (the "diamond angle"), in [0, 4).
+inline double pseudo_angle(double y, double x) {
+  const double s = std::fabs(x) + std::fabs(y);
+  if (s == 0) return 0;
+  const double r = y / s;
+  return x >= 0 ? (y >= 0 ? r : 4 + r) : 2 - r;
+}
+
+}  // namespace
+
+bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Polytope& out) {
   const double nn = norm(n);
   if (nn == 0) return true;
   const double tol = eps * nn;
-  // Quick accept / reject on the vertices.
   bool any_out = false, any_in = false;
-  for (const auto& f : p.faces)
-    for (const Vec3& x : f) {
-      const double s = dot(n, x) - d;
-      if (s > tol) any_out = true;
-      if (s < -tol) any_in = true;
-    }
+  for (const Vec3& x : p.pts) {
+    const double s = dot(n, x) - d;
+    any_out |= s > tol;
+    any_in |= s < -tol;
+  }
   if (!any_out) return true;
   if (!any_in) {
-    p.faces.clear();
-    p.face_id.clear();
+    p.clear();
     return false;
   }
-  std::vector<std::vector<Vec3>> faces;
-  std::vector<int> ids;
-  std::vector<Vec3> cap;
-  for (std::size_t k = 0; k < p.faces.size(); ++k) {
-    const auto& poly = p.faces[k];
-    std::vector<Vec3> out;
-    const std::size_t m = poly.size();
-    for (std::size_t i = 0; i < m; ++i) {
-      const Vec3& a = poly[i];
-      const Vec3& b = poly[(i + 1) % m];
+  out.clear();
+  // Cap points collected in a small static-size buffer (a convex cap of a cell has few vertices).
+  thread_local std::vector<Vec3> cap;
+  cap.clear();
+  for (int f = 0; f < p.nb_faces(); ++f) {
+    const int b0 = p.face_start[f], b1 = p.face_start[f + 1], m = b1 - b0;
+    const std::size_t start = out.pts.size();
+    for (int i = 0; i < m; ++i) {
+      const Vec3& a = p.pts[b0 + i];
+      const Vec3& b = p.pts[b0 + (i + 1) % m];
       const double sa = dot(n, a) - d, sb = dot(n, b) - d;
-      const bool ina = sa <= tol, inb = sb <= tol;
-      if (ina) out.push_back(a);
-      if (ina && std::fabs(sa) <= tol) cap.push_back(a);
+      if (sa <= tol) {
+        out.pts.push_back(a);
+        if (sa >= -tol) cap.push_back(a);
+      }
       if ((sa < -tol && sb > tol) || (sa > tol && sb < -tol)) {
         const double t = sa / (sa - sb);
         const Vec3 x = a + t * (b - a);
-        out.push_back(x);
+        out.pts.push_back(x);
         cap.push_back(x);
       }
     }
-    if (out.size() >= 3) {
-      faces.push_back(std::move(out));
-      ids.push_back(p.face_id[k]);
+    if (out.pts.size() - start >= 3) {
+      out.face_start.push_back(static_cast<int>(out.pts.size()));
+      out.face_id.push_back(p.face_id[f]);
+    } else {
+      out.pts.resize(start);
     }
   }
-  // The cap: the crossing points, deduplicated, sorted by angle around their mean in the plane.
-  std::vector<Vec3> uniq;
-  for (const Vec3& x : cap) {
+  // The cap: crossing points, deduplicated, sorted by angle around their mean in the plane.
+  const double dup2 = (tol / nn) * (tol / nn) * 4 + 1e-300;
+  std::size_t nu = 0;
+  for (std::size_t i = 0; i < cap.size(); ++i) {
     bool dup = false;
-    for (const Vec3& y : uniq)
-      if (norm2(x - y) <= tol * tol / (nn * nn) + 1e-300) {
-        dup = true;
-        break;
-      }
-    if (!dup) uniq.push_back(x);
+    for (std::size_t j = 0; j < nu && !dup; ++j) dup = norm2(cap[i] - cap[j]) <= dup2;
+    if (!dup) cap[nu++] = cap[i];
   }
-  if (uniq.size() >= 3) {
+  cap.resize(nu);
+  if (nu >= 3) {
     Vec3 c{0, 0, 0};
-    for (const Vec3& x : uniq) c = c + x;
-    c = (1.0 / static_cast<double>(uniq.size())) * c;
-    const Vec3 nu = (1.0 / nn) * n;
-    Vec3 ref = uniq[0] - c;
-    ref = ref - dot(ref, nu) * nu;
+    for (const Vec3& x : cap) c = c + x;
+    c = (1.0 / static_cast<double>(nu)) * c;
+    const Vec3 nz = (1.0 / nn) * n;
+    Vec3 ref = cap[0] - c;
+    ref = ref - dot(ref, nz) * nz;
     const double lr = norm(ref);
     if (lr > 0) {
       ref = (1.0 / lr) * ref;
-      const Vec3 ortho = cross(nu, ref);
-      std::vector<std::pair<double, Vec3>> ang;
-      for (const Vec3& x : uniq) {
-        const Vec3 r = x - c;
-        ang.push_back({std::atan2(dot(r, ortho), dot(r, ref)), x});
+      const Vec3 ortho = cross(nz, ref);
+      thread_local std::vector<std::pair<double, int>> ang;
+      ang.clear();
+      for (std::size_t i = 0; i < nu; ++i) {
+        const Vec3 r = cap[i] - c;
+        ang.push_back({pseudo_angle(dot(r, ortho), dot(r, ref)), static_cast<int>(i)});
       }
-      std::sort(ang.begin(), ang.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      std::vector<Vec3> poly;
-      for (const auto& [a, x] : ang) poly.push_back(x);
-      faces.push_back(std::move(poly));
-      ids.push_back(id);
+      std::sort(ang.begin(), ang.end());
+      for (const auto& [a, i] : ang) out.pts.push_back(cap[i]);
+      out.face_start.push_back(static_cast<int>(out.pts.size()));
+      out.face_id.push_back(id);
     }
   }
-  p.faces = std::move(faces);
-  p.face_id = std::move(ids);
-  return p.faces.size() >= 4;
+  std::swap(p, out);
+  return p.nb_faces() >= 4;
 }
 
 void Moments::add(const Moments& o) {
@@ -108,45 +117,42 @@ void Moments::add(const Moments& o) {
 
 Moments polytope_moments(const Polytope& p, const Vec3& z) {
   Moments M;
-  if (p.faces.empty()) return M;
-  // Apex: the mean of the vertices (inside the convex polytope), relative to z.
+  if (p.pts.empty()) return M;
   Vec3 c{0, 0, 0};
-  std::size_t n = 0;
-  for (const auto& f : p.faces)
-    for (const Vec3& x : f) {
-      c = c + (x - z);
-      ++n;
-    }
-  c = (1.0 / static_cast<double>(n)) * c;
-  for (const auto& f : p.faces) {
-    const Vec3 a = f[0] - z;
-    for (std::size_t i = 1; i + 1 < f.size(); ++i) {
-      const Vec3 b = f[i] - z, e = f[i + 1] - z;
+  for (const Vec3& x : p.pts) c = c + (x - z);
+  c = (1.0 / static_cast<double>(p.pts.size())) * c;
+  double s2[9] = {0};
+  for (int f = 0; f < p.nb_faces(); ++f) {
+    const int b0 = p.face_start[f], b1 = p.face_start[f + 1];
+    const Vec3 a = p.pts[b0] - z;
+    for (int i = b0 + 1; i + 1 < b1; ++i) {
+      const Vec3 b = p.pts[i] - z, e = p.pts[i + 1] - z;
       const double vol = std::fabs(dot(a - c, cross(b - c, e - c))) / 6.0;
       if (vol == 0) continue;
       const Vec3 s = ((c + a) + b) + e;
       M.m0 += vol;
       M.m1 = M.m1 + (vol / 4.0) * s;
       // int x x^T over a tet = V/20 (sum p p^T + s s^T).
-      const Vec3* pts[4] = {&c, &a, &b, &e};
+      const double w = vol / 20.0;
       for (int r = 0; r < 3; ++r)
-        for (int q = 0; q < 3; ++q) {
-          double acc = s[r] * s[q];
-          for (const Vec3* pp : pts) acc += (*pp)[r] * (*pp)[q];
-          M.m2[3 * r + q] += vol / 20.0 * acc;
-        }
+        for (int q = r; q < 3; ++q)
+          s2[3 * r + q] +=
+              w * (s[r] * s[q] + c[r] * c[q] + a[r] * a[q] + b[r] * b[q] + e[r] * e[q]);
     }
   }
+  for (int r = 0; r < 3; ++r)
+    for (int q = 0; q < 3; ++q) M.m2[3 * r + q] = r <= q ? s2[3 * r + q] : s2[3 * q + r];
   return M;
 }
 
 double face_area(const Polytope& p, int id) {
   double a = 0;
-  for (std::size_t k = 0; k < p.faces.size(); ++k) {
-    if (p.face_id[k] != id) continue;
-    const auto& f = p.faces[k];
+  for (int f = 0; f < p.nb_faces(); ++f) {
+    if (p.face_id[f] != id) continue;
+    const int b0 = p.face_start[f], b1 = p.face_start[f + 1];
     Vec3 s{0, 0, 0};
-    for (std::size_t i = 1; i + 1 < f.size(); ++i) s = s + cross(f[i] - f[0], f[i + 1] - f[0]);
+    for (int i = b0 + 1; i + 1 < b1; ++i)
+      s = s + cross(p.pts[i] - p.pts[b0], p.pts[i + 1] - p.pts[b0]);
     a += 0.5 * norm(s);
   }
   return a;

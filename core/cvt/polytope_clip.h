@@ -1,5 +1,6 @@
-// A convex polytope (faces as polygons) clipped by half-spaces, and its moments. Used to build
-// Voronoi cells restricted to a tet (cell ∩ tet = tet clipped by the bisector half-spaces).
+// A convex polytope (faces as polygons in one flat array) clipped by half-spaces, and its moments.
+// Used to build Voronoi cells restricted to a tet (cell ∩ tet = tet clipped by the bisector
+// half-spaces). Flat storage, reused buffers: no allocation in the hot loop once warmed up.
 #pragma once
 #include <array>
 #include <vector>
@@ -9,16 +10,24 @@
 namespace cvtmesh {
 
 struct Polytope {
-  std::vector<std::vector<Vec3>> faces;  // convex polygons, any orientation
-  std::vector<int> face_id;              // who made the face: 0..3 = tet faces, >= 4 = clip planes
+  std::vector<Vec3> pts;        // the faces' vertices, face after face
+  std::vector<int> face_start;  // #faces + 1 offsets into pts
+  std::vector<int> face_id;     // who made the face: 0..3 = tet faces, >= 4 = clip planes
+  int nb_faces() const { return static_cast<int>(face_id.size()); }
+  void clear() {
+    pts.clear();
+    face_start.assign(1, 0);
+    face_id.clear();
+  }
 };
 
 // The tetrahedron p0..p3 as a polytope; face f (opposite vertex f) has id f.
-Polytope tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3);
+void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3,
+                  Polytope& out);
 
-// Keeps the part {x : n.x <= d}; the new face gets `id`. Returns false if nothing is left.
-// `eps` is a length: points within eps of the plane count as on it.
-bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps);
+// Keeps the part {x : n.x <= d}; the new face gets `id`. `scratch` is a work buffer. Returns false
+// if nothing (of positive volume) is left. `eps`: points within eps of the plane count as on it.
+bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Polytope& scratch);
 
 // Moments relative to an origin z: m0 = volume, m1 = int (x - z), m2 = int (x - z)(x - z)^T.
 struct Moments {

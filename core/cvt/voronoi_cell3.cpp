@@ -1,7 +1,9 @@
 #include "core/cvt/voronoi_cell3.h"
 
+#include <algorithm>
 #include <unordered_set>
 
+#include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/mesh/face_key.h"
 #include "core/mesh/locate_point.h"
@@ -66,10 +68,15 @@ void linear_density(const TetMesh& m, int t, const std::vector<double>& rho, con
 
 }  // namespace
 
-CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
-                                      const std::vector<char>& constrained, int v, double eps,
-                                      CellWorkspace& ws, const std::vector<double>* rho) {
+namespace {
+
+// The cell of v clipped by the bisectors of the generators `nbrs`; `hit` receives the tets where
+// the cell has a piece of positive volume.
+CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star, const std::vector<char>& constrained, int v,
+                             double eps, CellWorkspace& ws, const std::vector<double>* rho,
+                             const std::vector<int>& nbrs, std::vector<int>& hit) {
   CellIntegrals total;
+  hit.clear();
   const int nt = m.nb_tets();
   if (static_cast<int>(ws.mark.size()) != nt) ws.mark.assign(nt, -1);
   ++ws.stamp;
@@ -77,12 +84,12 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
     std::fill(ws.mark.begin(), ws.mark.end(), -1);
     ws.stamp = 1;
   }
-  const std::vector<int> nbrs = vertex_neighbors(m, star, v);
   const Vec3 z = vec3(m.point(v));
   // Bisector half-spaces (x - mid).(w - z) <= 0.
-  std::vector<Vec3> normals;
-  std::vector<double> offsets;
-  normals.reserve(nbrs.size());
+  std::vector<Vec3>& normals = ws.normals;
+  std::vector<double>& offsets = ws.offsets;
+  normals.clear();
+  offsets.clear();
   for (int w : nbrs) {
     const Vec3 pw = vec3(m.point(w));
     const Vec3 n = pw - z;
@@ -98,13 +105,31 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
   for (std::size_t qi = 0; qi < ws.queue.size(); ++qi) {
     const int t = ws.queue[qi];
     const int* tv = &m.tets[4 * t];
-    Polytope p = tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
+    Polytope& p = ws.poly;
+    tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), p);
     bool alive = true;
-    for (std::size_t k = 0; k < normals.size() && alive; ++k)
-      alive = clip_polytope(p, normals[k], offsets[k], 4, eps);
+    const Vec3 q[4] = {vec3(m.point(tv[0])), vec3(m.point(tv[1])), vec3(m.point(tv[2])),
+                       vec3(m.point(tv[3]))};
+    for (std::size_t k = 0; k < normals.size() && alive; ++k) {
+      // A plane that keeps the whole tet cannot cut the piece: skip it; one that keeps none of
+      // it empties the piece.
+      int in = 0, out = 0;
+      for (const Vec3& x : q) {
+        const double sd = dot(normals[k], x) - offsets[k];
+        in += sd <= 0;
+        out += sd > 0;
+      }
+      if (out == 0) continue;
+      if (in == 0) {
+        alive = false;
+        break;
+      }
+      alive = clip_polytope(p, normals[k], offsets[k], 4, eps, ws.scratch);
+    }
     if (!alive) continue;
     const Moments mt = polytope_moments(p, z);
     if (mt.m0 <= 0) continue;
+    hit.push_back(t);
     total.volume += mt.m0;
     const double tr = mt.m2[0] + mt.m2[4] + mt.m2[8];
     if (!rho) {
@@ -135,6 +160,29 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
     }
   }
   return total;
+}
+
+}  // namespace
+
+CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
+                                      const std::vector<char>& constrained, int v, double eps,
+                                      CellWorkspace& ws, const std::vector<double>* rho) {
+  // First with the Delaunay neighbours; where the mesh is not Delaunay (a constrained mesh near
+  // its boundary) other generators can be nearer: redo the cell with every vertex of the tets it
+  // reached, so that the cells do not overlap.
+  std::vector<int> nbrs = vertex_neighbors(m, star, v);
+  std::vector<int> hit;
+  CellIntegrals c = integrate_cell(m, star, constrained, v, eps, ws, rho, nbrs, hit);
+  std::vector<int> more = nbrs;
+  for (int t : hit)
+    for (int k = 0; k < 4; ++k) {
+      const int w = m.tets[4 * t + k];
+      if (w != v) more.push_back(w);
+    }
+  std::sort(more.begin(), more.end());
+  more.erase(std::unique(more.begin(), more.end()), more.end());
+  if (more.size() == nbrs.size()) return c;
+  return integrate_cell(m, star, constrained, v, eps, ws, rho, more, hit);
 }
 
 std::vector<double> tet_circumcenters(const TetMesh& m) {
@@ -188,6 +236,15 @@ bool dual_voronoi_cell(const TetMesh& m, const VertexStar& star,
       if (constrained[4 * t + f]) return false;
     const LocateResult r = locate_point(m, &cc[3 * t], t, &constrained, 16);
     if (r.status != LocateStatus::kInside) return false;
+    // The dual decomposition is exact only where the mesh is Delaunay: every neighbour's opposite
+    // vertex must be outside the circumsphere (a constrained mesh can break this near the boundary).
+    const int* tv = &m.tets[4 * t];
+    for (int f = 0; f < 4; ++f) {
+      const int o = m.adj[4 * t + f];
+      if (o < 0) continue;
+      const int opp = m.tets[4 * (o / 4) + o % 4];
+      if (insphere(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), m.point(opp)) > 0) return false;
+    }
   }
   const Vec3 z = vec3(m.point(v));
   for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {

@@ -12,6 +12,9 @@
 namespace cvtmesh {
 
 struct CellWorkspace {
+  Polytope poly, scratch;
+  std::vector<Vec3> normals;
+  std::vector<double> offsets;
   std::vector<int> queue;
   std::vector<int> mark;  // #T, stamp of the last vertex that visited the tet
   int stamp = 0;

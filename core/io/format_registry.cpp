@@ -2,6 +2,11 @@
 
 #include <map>
 
+#include "core/io/medit_io.h"
+#include "core/io/surface_io.h"
+#include "core/io/tetgen_io.h"
+#include "core/io/vtk_io.h"
+
 namespace cvtmesh {
 namespace {
 
@@ -9,7 +14,22 @@ struct Registry {
   std::map<std::string, MeshReader> readers;
   std::map<std::string, MeshWriter> writers;
   Registry() {
-    // Formats of our own are registered here as they are implemented (core/io/*_io.h).
+    // Formats of our own (core/io/*_io.h). TetGen's .node/.ele/.face is several files: its
+    // writer is called by write_mesh itself; surfaces are read by read_mesh (they need meshing).
+    readers[".vtk"] = [](const std::string& p) { return read_vtk(p); };
+    readers[".vtu"] = [](const std::string& p) { return read_vtu(p); };
+    readers[".node"] = read_tetgen;
+    readers[".ele"] = read_tetgen;
+    readers[".mesh"] = read_medit;
+    writers[".vtk"] = write_vtk;
+    writers[".vtu"] = write_vtu;
+    // Medit has no element data in the .mesh itself: fields are not written.
+    writers[".mesh"] = [](const MeshData& d, const std::string& p,
+                          const std::vector<ElementField>&) { write_medit(d, p); };
+    for (const char* e : {".off", ".obj", ".ply", ".stl"})
+      writers[e] = [](const MeshData& d, const std::string& p, const std::vector<ElementField>&) {
+        write_surface(d, p);
+      };
   }
 };
 

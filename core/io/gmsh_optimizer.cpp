@@ -10,6 +10,7 @@
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/write_mesh.h"
+#include "core/mesh/renumber_vertices.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -28,7 +29,9 @@ void gmsh_optimize_mesh(MeshData& data, const std::string& method, int niter) {
       rmdir(dir.c_str());
     }
   } cleanup{dir, file};
-  write_mesh(data, file);
+  WriteOptions wo;
+  wo.binary = true;  // exact coordinates (ASCII .msh keeps 16 significant digits only)
+  write_mesh(data, file, wo);
   GmshSession session;
   std::string previous;
   gmsh::model::getCurrent(previous);
@@ -49,6 +52,7 @@ void gmsh_optimize_mesh(MeshData& data, const std::string& method, int niter) {
   gmsh::model::remove();
   if (!session.owns() && !previous.empty()) gmsh::model::setCurrent(previous);
   out.model().source = data.model().source;
+  renumber_vertices_like(out.tet, data.tet);
   data = std::move(out);
 }
 

@@ -58,6 +58,12 @@ void gmsh_checked(const std::string& context, const std::function<void()>& f) {
   try {
     f();
     return;
+  } catch (const InputError&) {
+    throw;  // already a message for the user (not Gmsh's last logged error)
+  } catch (const OutputError&) {
+    throw;
+  } catch (const InvariantError&) {
+    throw;
   } catch (const std::exception& e) {
     what = e.what();
   } catch (...) {

@@ -6,11 +6,20 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
+#include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
+#include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/gmsh_surface.h"
+#include "core/io/surface_io.h"
+#include "core/io/write_mesh.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -33,16 +42,62 @@ void check_readable(const std::string& path) {
   if (st.st_size == 0) throw InputError("cannot read '" + path + "': the file is empty");
 }
 
-// A closed triangulated surface in the current model becomes a volume meshed by Gmsh.
-void volume_from_surfaces() {
-  gmsh::vectorpair surfaces;
-  gmsh::model::getEntities(surfaces, 2);
-  std::vector<int> tags;
-  for (const auto& [d, t] : surfaces) tags.push_back(t);
-  const int loop = gmsh::model::geo::addSurfaceLoop(tags);
-  gmsh::model::geo::addVolume({loop});
-  gmsh::model::geo::synchronize();
-  gmsh::model::mesh::generate(3);
+// A .msh is a sequence of $Section ... $EndSection blocks (also in binary files): a file that does
+// not start with a section or does not end with an $End line is garbage or truncated. Gmsh
+// itself would try to parse garbage as a script, or read a truncated file up to where it stops.
+void check_msh_frame(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const std::size_t first = head.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos || head[first] != '$')
+    throw InputError("cannot read '" + path +
+                     "': not a Gmsh .msh file (it does not start with $MeshFormat)");
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff n = std::min<std::streamoff>(size, 256);
+  std::string tail(static_cast<std::size_t>(n), '\0');
+  in.seekg(size - n);
+  in.read(tail.data(), n);
+  const std::size_t last = tail.find_last_not_of(" \t\r\n");
+  const std::size_t line = last == std::string::npos ? 0 : tail.find_last_of('\n', last);
+  const std::string end =
+      last == std::string::npos ? "" : tail.substr(line == std::string::npos ? 0 : line + 1);
+  if (end.rfind("$End", 0) != 0)
+    throw InputError("cannot read '" + path +
+                     "': the file is truncated (it does not end with an $End... line)");
+}
+
+bool is_surface_format(const std::string& ext) {
+  return ext == ".stl" || ext == ".off" || ext == ".obj" || ext == ".ply";
+}
+
+// A surface file: tetrahedralized by Gmsh (3D), or a planar triangle mesh read as 2D (--dim 2).
+MeshData read_surface_file(const std::string& path, const ReadOptions& options) {
+  const std::string what = "'" + path + "'";
+  if (options.dim != 2) return tetrahedralize_surface(read_surface(path, true), what, options);
+  const SurfaceMesh s = read_surface(path, false);
+  MeshData d;
+  d.dim = 2;
+  double zmin = 1e300, zmax = -1e300, extent = 0;
+  for (std::size_t v = 0; v < s.xyz.size() / 3; ++v) {
+    zmin = std::min(zmin, s.xyz[3 * v + 2]);
+    zmax = std::max(zmax, s.xyz[3 * v + 2]);
+    extent = std::max({extent, std::fabs(s.xyz[3 * v]), std::fabs(s.xyz[3 * v + 1])});
+  }
+  if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+    throw InputError(what +
+                     ": the surface is not in a plane z = const, so it cannot be read as a "
+                     "2D mesh (--dim 2)");
+  d.tri.z0 = zmin;
+  for (std::size_t v = 0; v < s.xyz.size() / 3; ++v)
+    d.tri.xy.insert(d.tri.xy.end(), {s.xyz[3 * v], s.xyz[3 * v + 1]});
+  d.tri.tris = s.tris;
+  d.tri.model.name = std::filesystem::path(path).stem().string();
+  finish_mesh(d, what);
+  return d;
 }
 
 }  // namespace
@@ -52,52 +107,89 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = file_extension(path);
   if (const auto* reader = find_reader(ext)) {
     MeshData d = (*reader)(path);
+    if (options.dim > 0 && d.dim != options.dim)
+      throw InputError("'" + path + "' holds a " + std::to_string(d.dim) + "D mesh, not a " +
+                       std::to_string(options.dim) + "D one (--dim " + std::to_string(options.dim) +
+                       ")");
     d.model().source = path;
     return d;
   }
+  if (is_surface_format(ext)) {
+    MeshData d = read_surface_file(path, options);
+    d.model().source = path;
+    return d;
+  }
+  if (ext == ".msh") check_msh_frame(path);
   GmshSession session;
   MeshData data;
   std::string previous;
   gmsh::model::getCurrent(previous);
+  // Parameters of a .geo are defined before it is parsed (its DefineConstant[] then keeps them),
+  // like gmsh -setnumber: through a temporary wrapper that sets them and Includes the model.
+  std::string wrapper_dir, wrapper;
+  if (ext == ".geo" && (!options.set_numbers.empty() || !options.set_strings.empty())) {
+    char tmpl[] = "/tmp/cvtmesh-geo-XXXXXX";
+    if (!mkdtemp(tmpl))
+      throw InputError("cannot create a temporary directory to set the parameters of '" + path +
+                       "'");
+    wrapper_dir = tmpl;
+    wrapper = wrapper_dir + "/" + std::filesystem::path(path).filename().string();
+    std::ofstream w(wrapper);
+    for (const auto& [name, value] : options.set_numbers) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      w << name << " = " << buf << ";\n";
+    }
+    for (const auto& [name, value] : options.set_strings) w << name << " = \"" << value << "\";\n";
+    w << "Include \"" << std::filesystem::absolute(path).string() << "\";\n";
+  }
+  struct RemoveWrapper {
+    std::string dir, file;
+    ~RemoveWrapper() {
+      if (!file.empty()) std::remove(file.c_str());
+      if (!dir.empty()) rmdir(dir.c_str());
+    }
+  } remove_wrapper{wrapper_dir, wrapper};
   gmsh_checked("cannot read '" + path + "'", [&] {
-    for (const auto& [name, value] : options.set_numbers) gmsh::onelab::setNumber(name, {value});
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::open(path);
-  });
-  gmsh_checked("cannot mesh '" + path + "'", [&] {
-    if (!options.gmsh_optimize) {
-      gmsh::option::setNumber("Mesh.Optimize", 0);
-      gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
-    }
-    if (options.mesh_size_factor > 0)
-      gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
-    gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
-    int model_dim = gmsh::model::getDimension();
-    gmsh::vectorpair ents;
-    gmsh::model::getEntities(ents);
-    if (ents.empty()) throw InputError("'" + path + "' contains no geometry and no mesh");
-    // Does the model already carry elements of its dimension?
-    auto has_elements = [&](int d) {
-      gmsh::vectorpair e;
-      gmsh::model::getEntities(e, d);
-      for (const auto& [dd, t] : e) {
-        std::vector<int> types;
-        gmsh::model::mesh::getElementTypes(types, dd, t);
-        if (!types.empty()) return true;
-      }
-      return false;
-    };
-    const bool is_mesh_file = ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" ||
-                              ext == ".inp" || ext == ".bdf" || ext == ".med";
-    const bool is_surface_file = ext == ".stl" || ext == ".off" || ext == ".obj" || ext == ".ply";
-    if (is_surface_file && options.dim != 2) {
-      volume_from_surfaces();
-    } else if (!is_mesh_file) {
-      const int want = options.dim > 0 ? options.dim : model_dim;
-      if (!has_elements(want)) gmsh::model::mesh::generate(want);
-    }
+    gmsh::open(wrapper.empty() ? path : wrapper);
   });
   try {
+    gmsh_checked("cannot mesh '" + path + "'", [&] {
+      if (!options.gmsh_optimize) {
+        gmsh::option::setNumber("Mesh.Optimize", 0);
+        gmsh::option::setNumber("Mesh.OptimizeNetgen", 0);
+      }
+      if (options.mesh_size_factor > 0)
+        gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
+      gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
+      int model_dim = gmsh::model::getDimension();
+      gmsh::vectorpair ents;
+      gmsh::model::getEntities(ents);
+      if (ents.empty()) throw InputError("'" + path + "' contains no geometry and no mesh");
+      // Does the model already carry elements of its dimension?
+      auto has_elements = [&](int d) {
+        gmsh::vectorpair e;
+        gmsh::model::getEntities(e, d);
+        for (const auto& [dd, t] : e) {
+          std::vector<int> types;
+          gmsh::model::mesh::getElementTypes(types, dd, t);
+          if (!types.empty()) return true;
+        }
+        return false;
+      };
+      const bool is_mesh_file = ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" ||
+                                ext == ".inp" || ext == ".bdf" || ext == ".med";
+      if (!is_mesh_file) {
+        const int want = options.dim > 0 ? options.dim : model_dim;
+        if (!has_elements(want)) gmsh::model::mesh::generate(want);
+      } else {
+        // A .msh saved with physical groups may lack the boundary elements of other surfaces.
+        int want = options.dim;
+        if (want < 0) want = has_elements(3) ? 3 : 2;
+        add_missing_facets(want);
+      }
+    });
     data = mesh_from_gmsh(options.dim, "'" + path + "'");
   } catch (...) {
     gmsh::model::remove();
@@ -105,6 +197,11 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     throw;
   }
   data.model().source = path;
+  // The placeholder group of our MSH 2.2 output (see write_mesh.h) is not a user's group.
+  auto& groups = data.model().groups;
+  groups.erase(std::remove_if(groups.begin(), groups.end(),
+                              [](const PhysicalGroup& g) { return g.name == kUnassignedGroup; }),
+               groups.end());
   if (!session.owns()) {
     gmsh::model::remove();
     gmsh::model::setCurrent(previous);

@@ -1,6 +1,9 @@
 // Reads a mesh from a file, by extension: .msh (2.2/4.1) and whatever Gmsh opens (.geo is meshed
-// by Gmsh in the model's dimension; .stl/.step/.brep/...); TetGen .node/.ele and Medit .mesh by
-// our own readers; .off/.obj/.ply through OpenMesh (a closed surface is tetrahedralized by Gmsh).
+// by Gmsh in the model's dimension; .step/.brep/...); TetGen .node/.ele, Medit .mesh and VTK
+// .vtk/.vtu by our own readers (core/io/*_io.h); .stl/.off/.obj/.ply through OpenMesh (a closed
+// surface is tetrahedralized by Gmsh, see gmsh_surface.h; with dim 2 a planar one is read as a
+// 2D mesh). A .msh that lacks the boundary triangles of surfaces outside its physical groups gets
+// them back (gmsh_missing_facets.h).
 #pragma once
 #include <string>
 #include <utility>
@@ -17,6 +20,8 @@ struct ReadOptions {
   int seed = 0;                 // Mesh.RandomSeed (reproducible meshing)
   // Numbers set before a .geo is parsed (like gmsh -setnumber NAME VALUE), e.g. {"h", 0.1}.
   std::vector<std::pair<std::string, double>> set_numbers;
+  // Strings set the same way (like gmsh -setstring NAME VALUE), e.g. {"stl", "/data/femur.stl"}.
+  std::vector<std::pair<std::string, std::string>> set_strings;
 };
 
 // Throws InputError with a message naming the file and the problem.

@@ -10,6 +10,8 @@
 
 namespace cvtmesh {
 
+inline constexpr const char* kUnassignedGroup = "cvtmesh:unassigned";
+
 struct WriteOptions {
   double msh_version = 4.1;          // 4.1 or 2.2
   bool binary = false;               // binary .msh
@@ -17,6 +19,8 @@ struct WriteOptions {
   OutputPolicy policy;
 };
 
+// MSH 2.2 keeps physical groups only on elements that belong to one: entities in no group are
+// written in an extra group named kUnassignedGroup, which read_mesh drops.
 // Throws OutputError (cannot write, refused) or InputError (format cannot hold this mesh).
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 

@@ -7,6 +7,8 @@
 
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
+#include "core/pipeline/combined_optimize.h"
+#include "core/swap/swap_slivers.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "core/util/error.h"
@@ -30,7 +32,7 @@ std::shared_ptr<const SizingField3> sizing3(const TetMesh& mesh, const OptimizeO
 }
 
 void report(const OptimizeOptions& o, const std::string& phase, int it, double D, double energy,
-            const QualityStats& s) {
+            const QualityStats& s, bool restarted = false) {
   if (!o.progress) return;
   OptimizeProgress p;
   p.phase = phase;
@@ -39,6 +41,7 @@ void report(const OptimizeOptions& o, const std::string& phase, int it, double D
   p.energy = energy;
   p.q_min = s.q_min;
   p.q_avg = s.q_avg;
+  p.restarted = restarted;
   o.progress(p);
 }
 
@@ -48,18 +51,62 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.lloyd.max_iterations = o.max_iterations;
   lo.lloyd.tolerance = o.tolerance;
   lo.relaxation = o.relaxation;
+  lo.anderson_depth = o.anderson_depth;
   lo.sizing = sizing3(mesh, o);
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
-    if (o.progress) report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""));
+    if (o.progress)
+      report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""), s.restarted);
   });
   r.iterations = lr.iterations;
   r.converged = lr.converged;
+}
+
+// SWAP (Du & Wang): edge removals and 2-3 flips raising the local minimum Q, to convergence.
+void run_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  SwapOptions so;
+  so.measure = Measure::kQ;
+  const SwapStats st = swap_slivers(mesh, so);
+  r.iterations += st.passes;
+  r.converged = true;
+  report(o, "swap", st.passes, 0, 0, quality_stats(mesh, ""));
+}
+
+// The paper's CVDT + SWAP.
+void run_cvdt_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  run_cvdt3(mesh, o, r);
+  const int lloyd_iterations = r.iterations;
+  run_swap3(mesh, o, r);
+  r.iterations = lloyd_iterations;
+}
+
+// The classical Combined Optimization (CombOpt).
+void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  CombinedOptions co;
+  co.max_iterations = o.max_iterations;
+  const CombinedStats st = combined_optimize(
+      mesh, co, [&](int it, const QualityStats& s) { report(o, "combined", it, 0, 0, s); });
+  r.iterations = st.iterations;
+  r.converged = st.converged;
+}
+
+// CVDT + SWAP, then the guarded smoothing + dihedral-flip polish of the classical method on the
+// result (removes the last near-boundary slivers that flips alone cannot).
+void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  run_cvdt_swap3(mesh, o, r);
+  const int lloyd_iterations = r.iterations;
+  OptimizeResult polish;
+  run_combined3(mesh, o, polish);
+  r.iterations = lloyd_iterations;
 }
 
 using Method3 = void (*)(TetMesh&, const OptimizeOptions&, OptimizeResult&);
 const std::map<std::string, Method3>& methods3() {
   static const std::map<std::string, Method3> m = {
       {"cvdt", run_cvdt3},
+      {"cvdt+swap", run_cvdt_swap3},
+      {"cvdt+swap+smooth", run_cvdt_swap_smooth3},
+      {"swap", run_swap3},
+      {"combined", run_combined3},
   };
   return m;
 }
@@ -69,7 +116,7 @@ const std::map<std::string, Method3>& methods3() {
 std::vector<std::string> methods_for_dim(int dim) {
   std::vector<std::string> out;
   if (dim == 3) {
-    for (const char* name : {"cvdt+swap", "cvdt", "combined", "swap"})
+    for (const char* name : {"cvdt+swap+smooth", "cvdt+swap", "cvdt", "combined", "swap"})
       if (methods3().count(name)) out.push_back(name);
   }
   return out;

@@ -1,4 +1,6 @@
-// The named methods users pick: cvdt, cvdt+swap, combined, swap (3D); cvdt, dl, wdl (2D).
+// The named methods users pick. 3D: cvdt (Lloyd CVDT), cvdt+swap (the paper's CVDT+SWAP),
+// cvdt+swap+smooth (CVDT+SWAP then the guarded smoothing + dihedral flips polish), combined (the
+// classical CombOpt), swap (flips only). 2D: cvdt, dl, wdl.
 // One entry point for the CLI, the GUI panel and the scripting front ends.
 #pragma once
 #include <functional>
@@ -16,13 +18,15 @@ struct OptimizeProgress {
   double D = 0;       // Lloyd displacement (normalised), 0 if not applicable
   double energy = 0;  // CVT energy, 0 if not applicable
   double q_min = 0, q_avg = 0;
+  bool restarted = false;  // an accelerated Lloyd step was undone (energy rose)
 };
 
 struct OptimizeOptions {
-  std::string method = "cvdt+swap";
+  std::string method = "cvdt+swap+smooth";
   int max_iterations = 100;  // Lloyd / outer iterations
   double tolerance = 1e-5;   // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
-  double relaxation = 1.0;   // Lloyd over-relaxation omega in (0, 2); 1 = the paper's step
+  double relaxation = 1.5;   // Lloyd over-relaxation omega in (0, 2); 1 = the paper's plain step
+  int anderson_depth = 5;    // Anderson acceleration of Lloyd (0 = off: the paper's plain Lloyd)
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";

@@ -16,11 +16,14 @@ double sgn(double v) {
   return v < 0 ? -1.0 : 1.0;
 }
 
-// Gmsh's ICN for a linear simplex: 1/condition number of the Jacobian of the map from the
-// regular simplex, i.e. d / (||J||_F ||J^-1||_F), signed by det J.
+// Gmsh's "ICN" (Plugin(AnalyseMeshQuality), jacobianBasedQuality::minICNMeasure) for a linear
+// tet: with J the Jacobian of the map from the ideal (regular) tet, Gmsh evaluates
+// 3 det(J)^(2/3) / ||J||_F^2 (qualityMeasuresJacobian.cpp, _computeICN) -- the mean-ratio form,
+// not d / (||J||_F ||J^-1||_F). Scale- and rotation-invariant; 1 for the regular tet. Signed by
+// det J here (Gmsh reports 0 for an inverted element).
 double tet_icn(const double* a, const double* b, const double* c, const double* d) {
-  // Map from the regular tet R with vertices r0..r3 to (a,b,c,d): J = E * R^-1, E = [b-a c-a d-a].
-  // R^-1 for the regular tet of unit edge (0,0,0),(1,0,0),(1/2,sqrt3/2,0),(1/2,sqrt3/6,sqrt(2/3)).
+  // J = E * R^-1, E = [b-a c-a d-a], R the regular tet of unit edge
+  // (0,0,0),(1,0,0),(1/2,sqrt3/2,0),(1/2,sqrt3/6,sqrt(2/3)).
   const double s3 = std::sqrt(3.0), s23 = std::sqrt(2.0 / 3.0);
   const double R[3][3] = {{1, 0.5, 0.5}, {0, s3 / 2, s3 / 6}, {0, 0, s23}};  // columns r1,r2,r3
   // Inverse of the upper-triangular R.
@@ -50,15 +53,7 @@ double tet_icn(const double* a, const double* b, const double* c, const double* 
   double f2 = 0;
   for (auto& row : J)
     for (double v : row) f2 += v * v;
-  // ||J^-1||_F^2 = ||cof(J)||_F^2 / det^2.
-  double c2 = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      const double cof = J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1];
-      c2 += cof * cof;
-    }
-  return 3.0 * std::fabs(det) / std::sqrt(f2 * c2) * sgn(det);
+  return 3.0 * std::cbrt(det * det) / f2 * sgn(det);
 }
 
 double dist2n(const double* a, const double* b, int dim) {

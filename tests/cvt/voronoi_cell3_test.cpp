@@ -36,7 +36,7 @@ namespace {
 
 TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
   ReadOptions ro;
-  ro.set_numbers = {{"h", 0.15}, {"h_ball", 0.12}};
+  ro.set_numbers = {{"h", 0.09}, {"h_ball", 0.07}};
   MeshData d = read_mesh(std::string(CVTMESH_SOURCE_DIR) + "/geo/cube_sphere.geo", ro);
   // Gmsh's optimizer leaves non-Delaunay faces: rebuild the constrained Delaunay mesh first.
   Delaunay3::create("tetgen")->retetrahedralize(d.tet);

@@ -81,3 +81,54 @@ TriMesh2 square2() {
 }
 
 }  // namespace cvtmesh::testing
+
+#include <tetgen.h>
+
+#include "core/delaunay/tetgen_library.h"
+
+namespace cvtmesh::testing {
+
+TetMesh delaunay_of_points(const std::vector<double>& xyz) {
+  tetgenio in, out;
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(xyz.size() / 3);
+  in.pointlist = new REAL[xyz.size()];
+  std::copy(xyz.begin(), xyz.end(), in.pointlist);
+  char sw[] = "zQ";
+  tetgen_library().tetrahedralize(sw, &in, &out, nullptr, nullptr);
+  TetMesh m;
+  m.xyz = xyz;
+  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+    int v[4];
+    for (int k = 0; k < 4; ++k) v[k] = out.tetrahedronlist[4 * t + k];
+    if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0) std::swap(v[2], v[3]);
+    m.tets.insert(m.tets.end(), v, v + 4);
+    m.tet_region.push_back(1);
+  }
+  build_adjacency(m);
+  m.vclass.assign(m.nb_vertices(), VertexClass{3, 1});
+  for (int t = 0; t < m.nb_tets(); ++t)
+    for (int f = 0; f < 4; ++f)
+      if (m.adj[4 * t + f] < 0) {
+        for (int k = 0; k < 3; ++k) {
+          const int v = m.tets[4 * t + kTetFace[f][k]];
+          m.tris.push_back(v);
+          m.vclass[v] = VertexClass{2, 1};
+        }
+        m.tri_surface.push_back(1);
+      }
+  return m;
+}
+
+std::vector<double> bcc_lattice(int n, double a) {
+  std::vector<double> p;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) p.insert(p.end(), {i * a, j * a, k * a});
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) p.insert(p.end(), {(i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a});
+  return p;
+}
+
+}  // namespace cvtmesh::testing

@@ -1,6 +1,7 @@
 // Small hand-built meshes and helpers shared by the tests.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "core/mesh/tet_mesh.h"
 #include "core/mesh/tri_mesh2.h"
@@ -21,5 +22,17 @@ int run(const std::string& cmd, std::string* output = nullptr);
 TetMesh cube6();
 // The unit square split into 2 triangles (plus 4 boundary edges), adjacency built.
 TriMesh2 square2();
+
+}  // namespace cvtmesh::testing
+
+namespace cvtmesh::testing {
+
+// The Delaunay tetrahedralization of a point set (TetGen, no constraints): the convex-hull
+// triangles become the boundary (surface 1), hull vertices are fixed (class 2), others interior.
+TetMesh delaunay_of_points(const std::vector<double>& xyz);
+
+// Points of the body-centred cubic lattice with spacing a (cube corners and centres) in
+// [0, n*a]^3.
+std::vector<double> bcc_lattice(int n, double a);
 
 }  // namespace cvtmesh::testing

@@ -1,0 +1,25 @@
+#include "core/mesh/vertex_tets.h"
+
+namespace cvtmesh {
+
+VertexTets vertex_tets(const TetMesh& mesh) {
+  const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
+  VertexTets vt;
+  vt.offset.assign(static_cast<std::size_t>(nv) + 1, 0);
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    if (tv[0] < 0) continue;
+    for (int k = 0; k < 4; ++k) ++vt.offset[tv[k] + 1];
+  }
+  for (int v = 0; v < nv; ++v) vt.offset[v + 1] += vt.offset[v];
+  vt.tets.resize(static_cast<std::size_t>(vt.offset[nv]));
+  std::vector<int> fill(vt.offset.begin(), vt.offset.end() - 1);
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    if (tv[0] < 0) continue;
+    for (int k = 0; k < 4; ++k) vt.tets[fill[tv[k]]++] = t;
+  }
+  return vt;
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,24 @@
+// Vertex -> tets incidence of a tet mesh, in compressed (CSR) form.
+#pragma once
+#include <vector>
+
+#include "core/mesh/tet_mesh.h"
+
+namespace cvtmesh {
+
+struct VertexTets {
+  // #V+1 offsets: the tets around vertex v are tets[offset[v] .. offset[v+1]-1].
+  std::vector<int> offset;
+  // Live tet ids (0-based), grouped by vertex, increasing within a vertex.
+  std::vector<int> tets;
+
+  int nb_tets_of(int v) const { return offset[v + 1] - offset[v]; }
+  const int* begin_of(int v) const { return tets.data() + offset[v]; }
+  const int* end_of(int v) const { return tets.data() + offset[v + 1]; }
+};
+
+// The star of every vertex: the live tets (tets[4t] >= 0) incident to it. O(#V + #T).
+// Stays valid while only coordinates change; rebuild it after a change of connectivity.
+VertexTets vertex_tets(const TetMesh& mesh);
+
+}  // namespace cvtmesh

@@ -1,0 +1,44 @@
+#include "core/pipeline/combined_optimize.h"
+
+#include <stdexcept>
+
+#include "core/mesh/build_adjacency.h"
+
+namespace cvtmesh {
+
+CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
+                                std::function<void(int iteration, const QualityStats&)> progress) {
+  if (options.max_iterations < 0)
+    throw std::invalid_argument("combined_optimize: max_iterations must be >= 0");
+  if (options.smoothing_passes < 0)
+    throw std::invalid_argument("combined_optimize: smoothing_passes must be >= 0");
+  if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
+  CombinedStats stats;
+  stats.before = quality_stats(mesh, "Init");
+  QualityStats prev = stats.before;
+  SmoothOptions smooth = options.smoothing;
+  smooth.passes = options.smoothing_passes;
+  SwapOptions swap = options.swap;
+  swap.compact = true;
+  for (int it = 1; it <= options.max_iterations; ++it) {
+    const SmoothStats ss = smooth_laplacian(mesh, smooth);
+    const SwapStats sw = swap_slivers(mesh, swap);
+    stats.nb_moved += ss.nb_moved + ss.nb_half;
+    stats.nb_flips += sw.nb_flip23 + sw.nb_flip32 + sw.nb_edge_removals;
+    stats.iterations = it;
+    const QualityStats now = quality_stats(mesh, "CombOpt");
+    if (progress) progress(it, now);
+    const bool improved = now.q_avg > prev.q_avg + options.tolerance ||
+                          now.q_min > prev.q_min + options.tolerance ||
+                          now.min_angle > prev.min_angle + options.angle_tolerance;
+    prev = now;
+    if (!improved) {
+      stats.converged = true;
+      break;
+    }
+  }
+  stats.after = quality_stats(mesh, "CombOpt");
+  return stats;
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,46 @@
+// The classical "Combined Optimization" (Du & Wang, Section 4, the CombOpt column of Tables 6
+// and 7): each iteration runs 3-5 guarded Laplacian smoothing passes over the interior vertices,
+// then edge/face flips that improve the minimal dihedral angles (swap_slivers with kMinAngle);
+// iterations stop when the quality stops improving or at max_iterations.
+#pragma once
+#include <functional>
+
+#include "core/mesh/tet_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "core/smoothing/smooth_laplacian.h"
+#include "core/swap/swap_slivers.h"
+
+namespace cvtmesh {
+
+struct CombinedOptions {
+  int max_iterations = 20;
+  int smoothing_passes = 3;  // Laplacian passes per iteration (the paper: three to five)
+  SmoothOptions smoothing;   // its `passes` is ignored (smoothing_passes is used)
+  SwapOptions swap = [] {
+    SwapOptions s;
+    s.measure = Measure::kMinAngle;  // flips improving the minimal dihedral angles
+    return s;
+  }();
+  // Converged when an iteration raises neither the average Q nor the minimum Q by more than
+  // `tolerance`, nor the minimum dihedral angle by more than `angle_tolerance` degrees.
+  double tolerance = 1e-4;
+  double angle_tolerance = 1e-2;
+};
+
+struct CombinedStats {
+  int iterations = 0;
+  bool converged = false;
+  QualityStats before, after;
+  long nb_moved = 0;  // accepted vertex moves (full or half steps), all iterations
+  long nb_flips = 0;  // committed flips and edge removals, all iterations
+};
+
+// Optimizes mesh in place (vertices with vclass.dim < 3 never move, constrained faces are kept,
+// no tet is ever inverted). progress(iteration, stats) is called after each iteration with the
+// quality statistics of the mesh at that point. Builds mesh.adj if needed; leaves it valid and
+// the tets compacted. Throws std::invalid_argument for bad options.
+CombinedStats combined_optimize(
+    TetMesh& mesh, const CombinedOptions& options = {},
+    std::function<void(int iteration, const QualityStats&)> progress = nullptr);
+
+}  // namespace cvtmesh

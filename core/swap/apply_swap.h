@@ -1,0 +1,19 @@
+// Commits a planned swap: replaces plan.old_tets by plan.new_tets and repairs the adjacency
+// locally (O(size of the cavity), no O(#T) work). The move only; the decision is accept_swap.
+#pragma once
+#include <vector>
+
+#include "core/mesh/tet_mesh.h"
+#include "core/swap/swap_plan.h"
+
+namespace cvtmesh {
+
+// New tets reuse the slots of the old ones first, then dead slots popped from *free_slots (if
+// given), then are appended. Old slots left over are marked dead (all four ids -1, adjacency -1)
+// and pushed onto *free_slots. Fills plan.new_ids. Keeps tet_region (plan.region) and tet_tags
+// (0 for a new tet, when tet_tags is not empty) in step.
+// Throws std::invalid_argument if plan.status is not kOk, InvariantError if the new tets do not
+// have exactly the old cavity's boundary faces (a planner bug).
+void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots = nullptr);
+
+}  // namespace cvtmesh

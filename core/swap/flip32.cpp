@@ -1,0 +1,28 @@
+#include "core/swap/flip32.h"
+
+#include "core/swap/apply_swap.h"
+#include "core/swap/remove_edge.h"
+
+namespace cvtmesh {
+
+SwapPlan plan_flip32(const TetMesh& mesh, const ConstrainedFaces& constrained, int t, int e,
+                     Measure measure) {
+  SwapPlan plan = plan_remove_edge(mesh, constrained, t, e, measure, /*max_ring=*/3);
+  if (plan.status == SwapStatus::kOk && plan.old_tets.size() != 3)
+    plan.status = SwapStatus::kRingSize;
+  return plan;
+}
+
+SwapPlan flip32(TetMesh& mesh, int t, int e, const SwapCriterion* criterion) {
+  const Measure m = criterion ? criterion->measure : Measure::kQ;
+  SwapPlan plan = plan_flip32(mesh, constrained_faces(mesh), t, e, m);
+  if (plan.status != SwapStatus::kOk) return plan;
+  if (criterion && !accept_swap(mesh, plan, *criterion)) {
+    plan.status = SwapStatus::kRejected;
+    return plan;
+  }
+  apply_swap(mesh, plan);
+  return plan;
+}
+
+}  // namespace cvtmesh

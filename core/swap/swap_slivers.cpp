@@ -1,0 +1,193 @@
+#include "core/swap/swap_slivers.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/mesh/build_adjacency.h"
+#include "core/mesh/face_key.h"
+#include "core/swap/accept_swap.h"
+#include "core/swap/apply_swap.h"
+#include "core/swap/compact_tets.h"
+#include "core/swap/constrained_faces.h"
+#include "core/swap/edge_ring.h"
+#include "core/swap/flip23.h"
+#include "core/swap/remove_edge.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+double quality_of(const TetMesh& mesh, int t, Measure m) {
+  const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
+  return tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), m);
+}
+
+double global_min(const std::vector<double>& q, const TetMesh& mesh) {
+  double m = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < mesh.nb_tets(); ++t)
+    if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) m = std::min(m, q[t]);
+  return m;
+}
+
+// The tets of a cavity with their versions, sorted: an operation that failed on a cavity fails
+// again as long as the same tets are there unchanged (vertices never move here).
+struct Cavity {
+  std::array<std::pair<int, unsigned>, 7> tets;
+  int n = 0;
+  bool operator==(const Cavity& o) const {
+    return n == o.n && std::equal(tets.begin(), tets.begin() + n, o.tets.begin());
+  }
+};
+
+Cavity cavity_of(const std::vector<int>& ids, const std::vector<unsigned>& version) {
+  Cavity c;
+  if (ids.size() > c.tets.size()) throw InvariantError("swap_slivers: cavity larger than 7 tets");
+  c.n = static_cast<int>(ids.size());
+  for (int i = 0; i < c.n; ++i) {  // insertion sort of at most 7 entries
+    const std::pair<int, unsigned> x{ids[i], version[ids[i]]};
+    int j = i;
+    for (; j > 0 && x < c.tets[j - 1]; --j) c.tets[j] = c.tets[j - 1];
+    c.tets[j] = x;
+  }
+  return c;
+}
+
+}  // namespace
+
+SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
+  check_swap_measure(options.measure);
+  if (options.max_ring < 3 || options.max_ring > 7)
+    throw std::invalid_argument("swap_slivers: max_ring must be 3..7");
+  if (options.max_passes < 0) throw std::invalid_argument("swap_slivers: max_passes must be >= 0");
+  if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
+
+  const Measure measure = options.measure;
+  const SwapCriterion criterion{measure, options.min_gain};
+  const ConstrainedFaces constrained = constrained_faces(mesh);
+  // Edges of constrained triangles can never be removed (a face around them is constrained).
+  std::unordered_set<EdgeKey, EdgeKeyHash> constrained_edges;
+  for (int f = 0; f < mesh.nb_tris(); ++f)
+    for (int k = 0; k < 3; ++k)
+      constrained_edges.insert(edge_key(mesh.tris[3 * f + k], mesh.tris[3 * f + (k + 1) % 3]));
+  // Cavities on which an operation was planned and refused, by edge and by face.
+  std::unordered_map<EdgeKey, Cavity, EdgeKeyHash> failed_edges;
+  std::unordered_map<FaceKey, Cavity, FaceKeyHash> failed_faces;
+  SwapStats stats;
+
+  // Per-slot quality and version (bumped whenever the slot's tet changes).
+  std::vector<double> q(static_cast<std::size_t>(mesh.nb_tets()));
+  std::vector<unsigned> version(q.size(), 0);
+  std::vector<int> free_slots;
+  for (int t = 0; t < mesh.nb_tets(); ++t) {
+    if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0) {
+      free_slots.push_back(t);
+      continue;
+    }
+    q[t] = quality_of(mesh, t, measure);
+    ++stats.nb_tets_before;
+  }
+  stats.min_before = global_min(q, mesh);
+
+  struct Entry {
+    double q;
+    int t;
+    unsigned version;
+  };
+  std::vector<Entry> order;
+  for (int pass = 0; pass < options.max_passes; ++pass) {
+    order.clear();
+    for (int t = 0; t < mesh.nb_tets(); ++t)
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0 && q[t] < options.quality_threshold)
+        order.push_back({q[t], t, version[t]});
+    std::sort(order.begin(), order.end(),
+              [](const Entry& a, const Entry& b) { return a.q != b.q ? a.q < b.q : a.t < b.t; });
+    ++stats.passes;
+    long nb_done = 0;
+    for (const Entry& en : order) {
+      const int t = en.t;
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0 || version[t] != en.version) continue;
+      ++stats.nb_tried;
+      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      SwapPlan best;
+      bool have_best = false;
+      // Evaluates a valid plan; true if the criterion accepts it (it becomes best if better).
+      auto consider = [&](SwapPlan&& plan) {
+        if (plan.status != SwapStatus::kOk) return false;
+        if (!plan.quality_known || plan.measure != measure) {
+          plan.old_min = std::numeric_limits<double>::infinity();
+          for (int o : plan.old_tets) plan.old_min = std::min(plan.old_min, q[o]);
+          plan.new_min = min_quality(mesh, plan.new_tets, measure);
+          plan.quality_known = true;
+          plan.measure = measure;
+        }
+        if (!accept_swap(plan.old_min, plan.new_min, criterion)) return false;
+        if (!have_best || plan.new_min > best.new_min) {
+          best = std::move(plan);
+          have_best = true;
+        }
+        return true;
+      };
+      if (options.remove_edges)
+        for (int e = 0; e < 6; ++e) {
+          const EdgeKey key = edge_key(tv[kTetEdge[e][0]], tv[kTetEdge[e][1]]);
+          if (constrained_edges.count(key)) continue;
+          const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
+          if (!ring.closed) continue;
+          const Cavity cav = cavity_of(ring.tets, version);
+          const auto it = failed_edges.find(key);
+          if (it != failed_edges.end() && it->second == cav) continue;
+          if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
+            failed_edges[key] = cav;
+        }
+      if (options.flip23)
+        for (int f = 0; f < 4; ++f) {
+          const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
+          if (behind < 0) continue;
+          const FaceKey key = face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]);
+          const Cavity cav = cavity_of({t, behind / 4}, version);
+          const auto it = failed_faces.find(key);
+          if (it != failed_faces.end() && it->second == cav) continue;
+          if (!consider(plan_flip23(mesh, constrained, t, f))) failed_faces[key] = cav;
+        }
+      if (!have_best) continue;
+
+      const std::size_t nb_old = best.old_tets.size(), nb_new = best.new_tets.size();
+      for (int o : best.old_tets) ++version[o];
+      apply_swap(mesh, best, &free_slots);
+      if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
+        q.resize(static_cast<std::size_t>(mesh.nb_tets()));
+        version.resize(q.size(), 0);
+      }
+      for (int id : best.new_ids) {
+        ++version[id];
+        q[id] = quality_of(mesh, id, measure);
+      }
+      ++nb_done;
+      if (nb_old == 2 && nb_new == 3) {
+        ++stats.nb_flip23;
+      } else {
+        ++stats.nb_by_ring[nb_old];
+        if (nb_old == 3)
+          ++stats.nb_flip32;
+        else
+          ++stats.nb_edge_removals;
+      }
+    }
+    if (nb_done == 0) break;
+  }
+
+  stats.min_after = global_min(q, mesh);
+  if (options.compact) compact_tets(mesh);
+  for (int t = 0; t < mesh.nb_tets(); ++t)
+    if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) ++stats.nb_tets_after;
+  return stats;
+}
+
+}  // namespace cvtmesh

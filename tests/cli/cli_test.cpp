@@ -1,0 +1,346 @@
+// End-to-end runs of the cvtmesh CLI: the quality table, conversions, and bad input. Every bad
+// input gives a non-zero exit, one line naming the file, and no output (nor temporary) file.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include "tests/io/gmsh_dump.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run;
+
+std::string cli() {
+  return testing::cli_path();
+}
+std::string q(const std::string& s) {
+  return "'" + s + "'";
+}
+
+void spit(const std::string& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+std::string slurp(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Rows of the text table: label -> value (first column).
+std::map<std::string, double> table_rows(const std::string& out) {
+  std::map<std::string, double> rows;
+  std::istringstream in(out);
+  std::string line;
+  const std::regex row(R"(^(.*\S)\s{2,}(-?[0-9.]+)\s*$)");
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, row)) rows[m[1]] = std::stod(m[2]);
+  }
+  return rows;
+}
+
+TEST(Cli, StatsPrintsTheTable6Rows) {
+  std::string out;
+  ASSERT_EQ(run(cli() + " stats " + q(testing::geo_path("cube_sphere.geo")), &out), 0) << out;
+  const auto rows = table_rows(out);
+  for (const char* r :
+       {"number of elements", "0.7 < Q <= 1.0", "0.5 < Q <= 0.7", "0.3 < Q <= 0.5",
+        "0.0 < Q <= 0.3", "Q_min", "bad elements (%)", "good elements (%)", "average quality"})
+    ASSERT_TRUE(rows.count(r)) << "missing row '" << r << "' in:\n" << out;
+  const double n = rows.at("number of elements");
+  const double b1 = rows.at("0.7 < Q <= 1.0"), b2 = rows.at("0.5 < Q <= 0.7"),
+               b3 = rows.at("0.3 < Q <= 0.5"), b4 = rows.at("0.0 < Q <= 0.3");
+  // A valid mesh: every element in one of the four bins.
+  EXPECT_EQ(b1 + b2 + b3 + b4, n);
+  EXPECT_NEAR(rows.at("good elements (%)"), 100 * (b1 + b2) / n, 0.006);
+  EXPECT_GT(rows.at("Q_min"), 0);
+  EXPECT_LE(rows.at("Q_min"), rows.at("average quality"));
+  EXPECT_LE(rows.at("average quality"), 1);
+  // The paper's example is meshed with roughly 24-26k tets by default.
+  EXPECT_GT(n, 20000);
+  EXPECT_LT(n, 30000);
+}
+
+TEST(Cli, ConvertWithQualityGivesAMshWithThreeViews) {
+  const std::string dir = testing::temp_dir();
+  const std::string out = dir + "/cs.msh";
+  std::string log;
+  ASSERT_EQ(run(cli() + " convert " + q(testing::geo_path("cube_sphere.geo")) + " " + q(out) +
+                    " --quality --set h=0.12",
+                &log),
+            0)
+      << log;
+  std::string stats;
+  ASSERT_EQ(run(cli() + " stats " + q(out), &stats), 0) << stats;
+  const auto rows = table_rows(stats);
+  const testing::GmshDump g = testing::gmsh_dump(out);
+  ASSERT_EQ(g.views.size(), 3u);
+  ASSERT_TRUE(g.views.count("Q (Du-Wang)"));
+  const auto& qv = g.views.at("Q (Du-Wang)");
+  EXPECT_EQ(static_cast<double>(qv.size()), rows.at("number of elements"));
+  double qmin = 1e9, qsum = 0;
+  for (const auto& [tag, v] : qv) {
+    qmin = std::min(qmin, v);
+    qsum += v;
+  }
+  // The view holds the values `stats` summarizes (printed to 4 decimals).
+  EXPECT_NEAR(qmin, rows.at("Q_min"), 5e-5);
+  EXPECT_NEAR(qsum / qv.size(), rows.at("average quality"), 5e-5);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(Cli, ConvertsToEveryOwnFormat) {
+  const std::string dir = testing::temp_dir();
+  const std::string msh = dir + "/in.msh";
+  ASSERT_EQ(run(cli() + " convert " + q(testing::geo_path("cube_sphere.geo")) + " " + q(msh) +
+                " --set h=0.25 --set h_ball=0.15"),
+            0);
+  for (const char* ext : {".vtk", ".vtu", ".node", ".mesh", ".off", ".obj", ".ply", ".stl"}) {
+    const std::string out = dir + "/out" + ext;
+    std::string log;
+    EXPECT_EQ(run(cli() + " convert " + q(msh) + " " + q(out), &log), 0) << ext << ": " << log;
+    EXPECT_TRUE(fs::exists(out)) << ext;
+    if (std::string(ext) != ".stl" && std::string(ext) != ".off" && std::string(ext) != ".obj" &&
+        std::string(ext) != ".ply") {
+      // Meshes read back with the same number of elements.
+      std::string a, b;
+      ASSERT_EQ(run(cli() + " stats " + q(out), &a), 0) << a;
+      ASSERT_EQ(run(cli() + " stats " + q(msh), &b), 0) << b;
+      EXPECT_EQ(table_rows(a).at("number of elements"), table_rows(b).at("number of elements"));
+    }
+  }
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find("cvtmesh-tmp"), std::string::npos)
+        << "stray temporary " << e.path();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+
+const char* kTet = R"($MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Entities
+0 0 0 1
+1 0 0 0 1 1 1 0 0
+$EndEntities
+$Nodes
+1 4 1 4
+3 1 0 4
+1
+2
+3
+4
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+$EndNodes
+$Elements
+1 1 1 1
+3 1 4 1
+1 1 2 3 4
+$EndElements
+)";
+
+std::string edit(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+// Two cells in one volume: a hexahedron and a tet.
+const char* kHexAndTet = R"($MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Entities
+0 0 0 1
+1 0 0 0 2 1 1 0 0
+$EndEntities
+$Nodes
+1 12 1 12
+3 1 0 12
+1
+2
+3
+4
+5
+6
+7
+8
+9
+10
+11
+12
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+2 0 0
+2 1 0
+2 0 1
+2 1 1
+$EndNodes
+$Elements
+2 2 1 2
+3 1 5 1
+1 1 2 3 4 5 6 7 8
+3 1 4 1
+2 2 9 10 11
+$EndElements
+)";
+
+std::string second_order_tet() {
+  return R"($MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Entities
+0 0 0 1
+1 0 0 0 1 1 1 0 0
+$EndEntities
+$Nodes
+1 10 1 10
+3 1 0 10
+1
+2
+3
+4
+5
+6
+7
+8
+9
+10
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+0.5 0 0
+0.5 0.5 0
+0 0.5 0
+0 0 0.5
+0 0.5 0.5
+0.5 0 0.5
+$EndNodes
+$Elements
+1 1 1 1
+3 1 11 1
+1 1 2 3 4 5 6 7 8 9 10
+$EndElements
+)";
+}
+
+struct BadCase {
+  std::string name;     // input file name (in the test directory)
+  std::string content;  // written unless empty and `make` is set
+  std::string message;  // expected in the error line
+  std::string output = "out.msh";
+  std::string extra;  // extra arguments
+};
+
+void expect_refused(const std::string& dir, const BadCase& c) {
+  SCOPED_TRACE(c.name);
+  const std::string in = dir + "/" + c.name;
+  const std::string out = dir + "/" + c.output;
+  std::string log;
+  const int rc = run(
+      "cd " + q(dir) + " && " + cli() + " convert " + q(c.name) + " " + q(c.output) + " " + c.extra,
+      &log);
+  EXPECT_NE(rc, 0) << log;
+  EXPECT_FALSE(rc == 128) << "crashed: " << log;
+  // One line, naming the file (input, or output for output problems), with the expected words.
+  std::string trimmed = log;
+  while (!trimmed.empty() && trimmed.back() == '\n') trimmed.pop_back();
+  EXPECT_EQ(trimmed.find('\n'), std::string::npos) << "more than one line:\n" << log;
+  const std::string& named = c.message.rfind("out:", 0) == 0 ? c.output : c.name;
+  EXPECT_NE(log.find(named), std::string::npos) << "does not name '" << named << "': " << log;
+  const std::string words = c.message.rfind("out:", 0) == 0 ? c.message.substr(4) : c.message;
+  EXPECT_NE(log.find(words), std::string::npos) << "expected '" << words << "' in: " << log;
+  EXPECT_FALSE(fs::exists(out) && c.output != c.name) << "an output file was left: " << out;
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find("cvtmesh-tmp"), std::string::npos)
+        << "stray temporary " << e.path();
+  (void)in;
+}
+
+TEST(CliBadInput, EachGivesOneLineNamingTheFileAndNoOutput) {
+  const std::string dir = testing::temp_dir();
+  const std::string tet = kTet;
+  std::vector<BadCase> cases = {
+      {"missing.msh", "", "no such file"},
+      {"empty.msh", "", "empty"},
+      {"truncated_nodes.msh", tet.substr(0, tet.find("0 1 0\n")), "truncated"},
+      {"truncated_elements.msh", tet.substr(0, tet.find("2 3 4\n$EndElements")), "truncated"},
+      {"garbage.msh", "\x7f\x45\x4c\x46 this is not a mesh at all\n", "not a Gmsh .msh"},
+      {"version.msh", edit(tet, "4.1 0 8", "7.3 0 8"), "version"},
+      {"hexahedron.msh", kHexAndTet, "Hexahedron"},
+      {"second_order.msh", second_order_tet(), "Tetrahedron 10"},
+      {"inverted.msh", edit(tet, "1 1 2 3 4\n", "1 2 1 3 4\n"), "inverted"},
+      {"nan.msh", edit(tet, "\n1 0 0\n", "\nnan 0 0\n"), "NaN"},
+      {"missing_node.msh", edit(tet, "1 1 2 3 4\n", "1 1 2 3 9\n"), "node 9"},
+      {"syntax.geo", "Point(1) = {0, 0, 0, 1};\nPoint(2) = {1, 0, 0, 1;\n", "syntax error"},
+      {"nothing.geo", "Point(1) = {0, 0, 0, 1};\nPoint(2) = {1, 0, 0, 1};\nLine(1) = {1, 2};\n",
+       "only 2D triangle and 3D tetrahedral"},
+      {"open.stl",
+       "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+       "endloop\nendfacet\nendsolid x\n",
+       "not closed"},
+      {"good.msh", tet, "out:unknown output format", "out.xyz"},
+      {"good2.msh", tet, "out:does not exist", "nodir/out.msh"},
+      {"good3.msh", tet, "out:cannot hold per-element data", "out.mesh", "--quality"},
+  };
+  for (const BadCase& c : cases)
+    if (c.name != "missing.msh") spit(dir + "/" + c.name, c.content);
+  for (const BadCase& c : cases) expect_refused(dir, c);
+  // A directory as input.
+  fs::create_directory(dir + "/adir.msh");
+  expect_refused(dir, {"adir.msh", "", "is a directory"});
+}
+
+TEST(CliBadInput, OutputIntoAReadOnlyDirectory) {
+  const std::string dir = testing::temp_dir();
+  spit(dir + "/in.msh", kTet);
+  fs::create_directory(dir + "/ro");
+  chmod((dir + "/ro").c_str(), 0555);
+  if (access((dir + "/ro").c_str(), W_OK) == 0)
+    GTEST_SKIP() << "running with permission to write into a read-only directory (root)";
+  expect_refused(dir, {"in.msh", "", "out:not writable", "ro/out.msh"});
+  EXPECT_TRUE(fs::is_empty(dir + "/ro"));
+}
+
+TEST(CliBadInput, InputIsNotOverwrittenWithoutInPlace) {
+  const std::string dir = testing::temp_dir();
+  spit(dir + "/same.msh", kTet);
+  const std::string before = slurp(dir + "/same.msh");
+  for (const std::string out : {"same.msh", "./same.msh"}) {
+    std::string log;
+    EXPECT_NE(run("cd " + q(dir) + " && " + cli() + " convert same.msh " + out, &log), 0);
+    EXPECT_NE(log.find("--in-place"), std::string::npos) << log;
+    EXPECT_EQ(slurp(dir + "/same.msh"), before) << "the input was changed";
+  }
+  // With --in-place it is replaced (by an equivalent mesh).
+  std::string log;
+  EXPECT_EQ(run("cd " + q(dir) + " && " + cli() + " convert same.msh same.msh --in-place", &log), 0)
+      << log;
+  EXPECT_EQ(run(cli() + " stats " + q(dir + "/same.msh"), &log), 0) << log;
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+}  // namespace
+}  // namespace cvtmesh

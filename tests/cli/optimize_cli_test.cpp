@@ -1,0 +1,74 @@
+// End-to-end runs of `cvtmesh optimize`, `mesh`, `compare` and `check` on the bundled model.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "core/io/read_mesh.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+const std::string kCoarse = " --set h=0.14 --set h_ball=0.1";
+
+TEST(OptimizeCli, MeshThenOptimizeWritesAValidBetterMeshWithQualityViews) {
+  const std::string dir = testing::temp_dir();
+  const std::string init = dir + "/init.msh", out = dir + "/out.msh";
+  std::string log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " mesh " + testing::geo_path("cube_sphere.geo") +
+                             kCoarse + " -o " + init,
+                         &log),
+            0)
+      << log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " optimize " + init + " -o " + out +
+                             " --method cvdt --max-iterations 6 --quality",
+                         &log),
+            0)
+      << log;
+  // Progress lines on stderr: iteration, D, energy, Q.
+  EXPECT_NE(log.find("lloyd"), std::string::npos);
+  EXPECT_NE(log.find("energy"), std::string::npos);
+  const MeshData a = read_mesh(init), b = read_mesh(out);
+  EXPECT_NO_THROW(verify_optimized(a.tet, b.tet));
+  EXPECT_GT(quality_stats(b.tet, "").q_avg, quality_stats(a.tet, "").q_avg);
+  // The quality views are in the file.
+  std::string content;
+  ASSERT_EQ(testing::run("grep -c '\\$ElementData' " + out, &content), 0);
+  EXPECT_EQ(std::stoi(content), 3);
+  ASSERT_EQ(testing::run(testing::cli_path() + " check " + out, &log), 0) << log;
+  EXPECT_NE(log.find(": ok"), std::string::npos);
+}
+
+TEST(OptimizeCli, UnknownMethodAndBadOptionsFailCleanly) {
+  const std::string dir = testing::temp_dir();
+  std::string log;
+  EXPECT_NE(testing::run(testing::cli_path() + " optimize " + testing::geo_path("cube_sphere.geo") +
+                             kCoarse + " -o " + dir + "/x.msh --method nonsense",
+                         &log),
+            0);
+  EXPECT_NE(log.find("nonsense"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.msh"));
+  EXPECT_NE(testing::run(testing::cli_path() + " optimize " + testing::geo_path("cube_sphere.geo") +
+                             " -o " + dir + "/x.msh --relaxation 3",
+                         &log),
+            0);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.msh"));
+}
+
+TEST(OptimizeCli, CompareHasTheInitAndCvdtColumnsAndTheBaselines) {
+  std::string log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " compare " + testing::geo_path("cube_sphere.geo") +
+                             kCoarse + " --max-iterations 4 --format markdown",
+                         &log),
+            0)
+      << log;
+  for (const char* col : {"Init", "CVDT", "Gmsh optimize", "TetGen -q -O"})
+    EXPECT_NE(log.find(col), std::string::npos) << col;
+  EXPECT_NE(log.find("| average quality |"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cvtmesh

@@ -1,0 +1,185 @@
+#include "core/cvt/lloyd3.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "core/cvt/voronoi_cell3.h"
+#include "core/geometry/vec3.h"
+#include "core/io/read_mesh.h"
+#include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+TEST(Lloyd3, BccLatticeVertexIsItsOwnCentroid) {
+  const double a = 1.0;
+  TetMesh m = testing::delaunay_of_points(testing::bcc_lattice(4, a));
+  ASSERT_TRUE(check_mesh(m).ok);
+  const auto uniform = make_uniform_sizing3(a);
+  const CellCentroids c = voronoi_centroids_3d(m, *uniform);
+  int checked = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    const double* p = m.point(v);
+    // Far enough from the box that the truncated octahedron is not clipped.
+    bool deep = true;
+    for (int d = 0; d < 3; ++d) deep &= p[d] > 1.2 * a && p[d] < 2.8 * a;
+    if (!deep) continue;
+    ++checked;
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(c.centroid[3 * v + d], p[d], 1e-12) << v;
+    // The BCC Voronoi cell is a truncated octahedron of volume a^3 / 2.
+    EXPECT_NEAR(c.mass[v], 0.5 * a * a * a, 1e-12);
+  }
+  EXPECT_GE(checked, 8);
+}
+
+TEST(Lloyd3, ClippedCellCentroidMatchesMonteCarloNearestGenerator) {
+  // Unit cube corners (fixed) and a few interior generators near the faces: their Voronoi cells
+  // are cut by the cube. The mesh is the Delaunay tetrahedralization, so the restricted cell of a
+  // generator is {x in cube : nearest generator is it}. Compare with sampling.
+  std::vector<double> pts;
+  for (int i = 0; i < 8; ++i) pts.insert(pts.end(), {double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  const double interior[][3] = {{0.3, 0.4, 0.12}, {0.7, 0.6, 0.85}, {0.5, 0.45, 0.5}, {0.15, 0.8, 0.6}, {0.85, 0.2, 0.4}};
+  for (const auto& q : interior) pts.insert(pts.end(), q, q + 3);
+  TetMesh m = testing::delaunay_of_points(pts);
+  ASSERT_TRUE(check_mesh(m).ok);
+  const auto uniform = make_uniform_sizing3(1.0);  // rho = 1: mass = volume
+  const CellCentroids c = voronoi_centroids_3d(m, *uniform);
+  const int n = m.nb_vertices();
+  std::vector<double> sum(3 * n, 0.0);
+  std::vector<long> count(n, 0);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  const long samples = 400000;
+  for (long s = 0; s < samples; ++s) {
+    const double x[3] = {u(rng), u(rng), u(rng)};
+    int best = 0;
+    double bd = 1e300;
+    for (int v = 0; v < n; ++v) {
+      const double d = dist2(x, m.point(v));
+      if (d < bd) bd = d, best = v;
+    }
+    for (int d = 0; d < 3; ++d) sum[3 * best + d] += x[d];
+    ++count[best];
+  }
+  for (int v = 8; v < n; ++v) {
+    ASSERT_GT(count[v], 1000);
+    EXPECT_NEAR(c.mass[v], double(count[v]) / samples, 0.01);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(c.centroid[3 * v + d], sum[3 * v + d] / count[v], 0.01) << v << " " << d;
+  }
+}
+
+MeshData coarse_cube_sphere(bool optimized) {
+  ReadOptions ro;
+  ro.gmsh_optimize = optimized;
+  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
+  return read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+}
+
+std::multiset<std::tuple<int, int, int, int>> constrained_set(const TetMesh& m) {
+  std::multiset<std::tuple<int, int, int, int>> s;
+  for (int f = 0; f < m.nb_tris(); ++f) {
+    int k[3] = {m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]};
+    std::sort(k, k + 3);
+    s.insert({k[0], k[1], k[2], m.tri_surface[f]});
+  }
+  return s;
+}
+
+TEST(Lloyd3, EnergyNeverIncreasesAndInvariantsHoldOnCubeSphere) {
+  for (double omega : {1.0, 1.7}) {
+    MeshData d = coarse_cube_sphere(false);
+    const TetMesh input = d.tet;
+    Lloyd3Options o;
+    o.lloyd.max_iterations = 8;
+    o.lloyd.tolerance = 0;
+    o.relaxation = omega;
+    o.sizing = std::shared_ptr<const SizingField3>(make_uniform_sizing3(0.12).release());
+    std::vector<double> energy;
+    lloyd_optimize_3d(d.tet, o, [&](const LloydStep& s) {
+      energy.push_back(s.energy);
+      // check_mesh around every iteration is done inside; here the mesh is valid again.
+    });
+    ASSERT_EQ(energy.size(), 8u);
+    for (std::size_t i = 1; i < energy.size(); ++i) EXPECT_LE(energy[i], energy[i - 1] * (1 + 1e-12)) << omega << " " << i;
+    EXPECT_LT(energy.back(), energy.front());
+    const MeshCheck mc = check_mesh(d.tet);
+    EXPECT_TRUE(mc.ok);
+    EXPECT_EQ(mc.nb_inverted, 0);
+    EXPECT_EQ(constrained_set(d.tet), constrained_set(input));
+    for (int v = 0; v < input.nb_vertices(); ++v)
+      if (input.vclass[v].dim < 3)
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(d.tet.point(v)[k], input.point(v)[k]);
+    const auto vb = region_volumes(input), va = region_volumes(d.tet);
+    ASSERT_EQ(vb.size(), va.size());
+    for (std::size_t i = 0; i < vb.size(); ++i) EXPECT_NEAR(va[i].second, vb[i].second, 1e-12 * vb[i].second);
+    EXPECT_NO_THROW(verify_optimized(input, d.tet));
+  }
+}
+
+TEST(Lloyd3, MeshSizingKeepsGradingAndImprovesQuality) {
+  MeshData d = coarse_cube_sphere(false);
+  const double q0 = quality_stats(d.tet, "").q_avg;
+  Lloyd3Options o;
+  o.lloyd.max_iterations = 10;
+  o.relaxation = 1.7;
+  lloyd_optimize_3d(d.tet, o);
+  EXPECT_GT(quality_stats(d.tet, "").q_avg, q0 + 0.02);
+  // Grading: edges near the ball stay shorter than edges far from it.
+  double near = 0, far = 0;
+  int nn = 0, nf = 0;
+  for (int t = 0; t < d.tet.nb_tets(); ++t)
+    for (const auto& e : kTetEdge) {
+      const double* a = d.tet.point(d.tet.tets[4 * t + e[0]]);
+      const double* b = d.tet.point(d.tet.tets[4 * t + e[1]]);
+      const double mid[3] = {(a[0] + b[0]) / 2 - 0.5, (a[1] + b[1]) / 2 - 0.5, (a[2] + b[2]) / 2 - 0.5};
+      const double r = std::sqrt(mid[0] * mid[0] + mid[1] * mid[1] + mid[2] * mid[2]);
+      const double l = std::sqrt(dist2(a, b));
+      if (r < 0.32) near += l, ++nn;
+      else if (r > 0.6) far += l, ++nf;
+    }
+  ASSERT_GT(nn, 0);
+  ASSERT_GT(nf, 0);
+  EXPECT_LT(near / nn, far / nf);
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+TEST(Lloyd3, AndersonAcceleratedAcceptedEnergiesNeverIncrease) {
+  ReadOptions ro;
+  ro.gmsh_optimize = false;
+  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
+  MeshData d = read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  Lloyd3Options o;
+  o.lloyd.max_iterations = 10;
+  o.lloyd.tolerance = 0;
+  o.relaxation = 1.5;
+  o.anderson_depth = 5;
+  std::vector<double> accepted;
+  int restarts = 0;
+  lloyd_optimize_3d(d.tet, o, [&](const LloydStep& s) {
+    if (s.restarted) {
+      ++restarts;
+      ASSERT_FALSE(accepted.empty());
+      EXPECT_GT(s.energy, accepted.back());  // a restart happens only when the energy rose
+    } else {
+      accepted.push_back(s.energy);
+    }
+  });
+  ASSERT_GE(accepted.size(), 5u);
+  for (std::size_t i = 1; i < accepted.size(); ++i) EXPECT_LE(accepted[i], accepted[i - 1] * (1 + 1e-12));
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+}
+
+}  // namespace
+}  // namespace cvtmesh

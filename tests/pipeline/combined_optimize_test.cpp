@@ -1,0 +1,74 @@
+#include "core/pipeline/combined_optimize.h"
+
+#include <gtest/gtest.h>
+
+#include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
+#include "tests/swap/swap_test_util.h"
+
+namespace cvtmesh {
+namespace {
+
+using testing::boundary_faces;
+using testing::constrained_triples;
+using testing::total_volume;
+using testing::unoptimized_cube_sphere;
+
+TEST(CombinedOptimize, RaisesAverageAndMinimumQualityOfTheUnoptimizedCubeSphere) {
+  TetMesh m = unoptimized_cube_sphere();
+  ASSERT_TRUE(check_mesh(m).ok);
+  const TetMesh start = m;
+  const auto outer = boundary_faces(m);
+  const double vol = total_volume(m);
+  std::vector<int> iterations;
+  CombinedOptions o;
+  const CombinedStats s =
+      combined_optimize(m, o, [&](int it, const QualityStats&) { iterations.push_back(it); });
+  const QualityStats init = quality_stats(start, "Init"), now = quality_stats(m, "CombOpt");
+  ::testing::Test::RecordProperty("q_min",
+                                  std::to_string(init.q_min) + " -> " + std::to_string(now.q_min));
+  ::testing::Test::RecordProperty("q_avg",
+                                  std::to_string(init.q_avg) + " -> " + std::to_string(now.q_avg));
+  EXPECT_GT(now.q_avg, init.q_avg);
+  EXPECT_GT(now.q_min, init.q_min);
+  EXPECT_GT(now.min_angle, init.min_angle);  // the flips' criterion: minimal dihedral angle
+  EXPECT_EQ(now.nb_inverted, 0);
+  EXPECT_EQ(s.before.q_avg, init.q_avg);
+  EXPECT_EQ(s.after.q_avg, now.q_avg);
+  EXPECT_EQ(s.after.nb_elements, m.nb_tets());
+  // One progress call per iteration, numbered from 1.
+  ASSERT_EQ(static_cast<int>(iterations.size()), s.iterations);
+  for (int i = 0; i < s.iterations; ++i) EXPECT_EQ(iterations[i], i + 1);
+  EXPECT_TRUE(s.converged || s.iterations == o.max_iterations);
+  EXPECT_GT(s.nb_moved, 0);
+  EXPECT_GT(s.nb_flips, 0);
+  // Invariants: valid mesh, boundary kept, boundary vertices fixed, volume conserved.
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems[0]);
+  EXPECT_EQ(boundary_faces(m), outer);
+  EXPECT_EQ(constrained_triples(m), constrained_triples(start));
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    if (m.vclass[v].dim < 3)
+      for (int k = 0; k < 3; ++k) ASSERT_EQ(m.point(v)[k], start.point(v)[k]) << "vertex " << v;
+  EXPECT_NEAR(total_volume(m), vol, 1e-12 * vol);
+  EXPECT_NO_THROW(verify_optimized(start, m));  // the pipeline's own end-of-run invariants
+}
+
+TEST(CombinedOptimize, ZeroIterationsLeavesTheMeshAloneAndBadOptionsThrow) {
+  TetMesh m = testing::cube6();
+  const TetMesh start = m;
+  CombinedOptions o;
+  o.max_iterations = 0;
+  const CombinedStats s = combined_optimize(m, o);
+  EXPECT_EQ(s.iterations, 0);
+  EXPECT_EQ(m.tets, start.tets);
+  EXPECT_EQ(m.xyz, start.xyz);
+  o.max_iterations = -1;
+  EXPECT_THROW(combined_optimize(m, o), std::invalid_argument);
+  o.max_iterations = 1;
+  o.swap.measure = Measure::kMaxAngle;
+  EXPECT_THROW(combined_optimize(m, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cvtmesh
