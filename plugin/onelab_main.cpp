@@ -5,12 +5,15 @@
 // tree, then press Run. Gmsh launches `cvtmesh-onelab -onelab NAME SOCKET` for each action: on
 // initialize/check the "Mesh optimization (CVT)" inputs are (re)defined in Gmsh's tree; on compute
 // the mesh Gmsh saved (Gmsh/MshFileName) is optimized, written next to it as <name>_cvt.msh with
-// per-element quality, and opened in the GUI in place of the model. Thin: the work is in core/.
+// per-element quality, and shown in the GUI in place of the model (the next Run re-meshes the
+// model and starts again). Thin: the work is in core/.
 #include <algorithm>
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
+#include "core/io/gmsh_inprocess.h"
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/pipeline/optimize.h"
@@ -27,8 +30,8 @@ const char* const kUsage =
     "  gmsh model.geo -setstring Solver.Name0 cvtmesh -setstring Solver.Executable0 PATH\n"
     "then select Modules > Solver > cvtmesh in the tree and press Run. See docs/gmsh.md.\n";
 
-// <dir>/<stem>_cvt.msh for <dir>/<stem>.<ext>; a file already named *_cvt.msh is its own output,
-// so that running again optimizes the loaded result further instead of piling up suffixes.
+// <dir>/<stem>_cvt.msh for <dir>/<stem>.<ext>; a file already named *_cvt.msh (a project opened
+// from an earlier result) is its own output rather than piling up suffixes.
 std::string output_path(const std::string& input) {
   const auto slash = input.find_last_of('/');
   const auto dot = input.find_last_of('.');
@@ -42,20 +45,37 @@ std::string output_path(const std::string& input) {
   return stem + ".msh";
 }
 
-// .geo-language options that show the loaded result like cvtmesh-gui does: the Q view alone over
-// [0, 1]; in 3D cut by the plane x = x_mid (whole elements) so that the inside shows.
-std::string display_script(const MeshData& data, std::size_t nb_views) {
-  std::string s = "View[0].RangeType = 2; View[0].CustomMin = 0; View[0].CustomMax = 1;";
-  for (std::size_t v = 1; v < nb_views; ++v) s += " View[" + std::to_string(v) + "].Visible = 0;";
+// .geo-language text that shows the result in the GUI in place of the model: removes the quality
+// views of an earlier run (by name), replaces the model by the result ("Delete Model; Merge" --
+// the project file stays the model's, so the next Run re-meshes it), and shows the new Q view
+// like cvtmesh-gui does: alone, over [0, 1], in 3D cut by the plane x = x_mid (whole elements).
+std::string load_script(const MeshData& data, const std::string& path, std::size_t nb_views) {
+  // One statement per line: Gmsh runs a For loop by rewinding its input to the line after For.
+  std::vector<std::string> names;
+  for (int d : {2, 3})
+    for (const auto& n : quality_view_names(d))
+      if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  std::string ours;
+  for (const auto& n : names)
+    ours += std::string(ours.empty() ? "" : " || ") + "(StrCmp(Sprintf(View[cvt_v].Name), \"" + n +
+            "\") == 0)";
+  std::string s = "For cvt_v In {PostProcessing.NbViews - 1 : 0 : -1}\nIf (" + ours +
+                  ")\nDelete View[cvt_v];\nEndIf\nEndFor\n";
+  s += "Delete Model;\nMerge \"" + path + "\";\n";
+  if (nb_views == 0) return s;
+  s += "cvt_q = PostProcessing.NbViews - " + std::to_string(nb_views) + ";\n";
+  s += "View[cvt_q].RangeType = 2;\nView[cvt_q].CustomMin = 0;\nView[cvt_q].CustomMax = 1;\n";
+  for (std::size_t v = 1; v < nb_views; ++v)
+    s += "View[cvt_q + " + std::to_string(v) + "].Visible = 0;\n";
   if (data.dim == 3 && data.tet.nb_vertices() > 0) {
     double lo = data.tet.point(0)[0], hi = lo;
     for (int v = 0; v < data.tet.nb_vertices(); ++v) {
       lo = std::min(lo, data.tet.point(v)[0]);
       hi = std::max(hi, data.tet.point(v)[0]);
     }
-    s += " General.Clip0A = -1; General.Clip0B = 0; General.Clip0C = 0; General.Clip0D = " +
+    s += "General.Clip0A = -1;\nGeneral.Clip0B = 0;\nGeneral.Clip0C = 0;\nGeneral.Clip0D = " +
          std::to_string(0.5 * (lo + hi)) +
-         "; General.ClipWholeElements = 1; View[0].Clip = 1; Mesh.Clip = 1;";
+         ";\nGeneral.ClipWholeElements = 1;\nView[cvt_q].Clip = 1;\nMesh.Clip = 1;\n";
   }
   return s;
 }
@@ -89,9 +109,8 @@ int compute(plugin::RemoteOnelab& tree) {
   write_mesh(data, out, w);
   plugin::show_results(tree, r);
   tree.info(plugin::summary(r));
-  tree.info("cvtmesh: wrote " + out + "; opening it in place of the model");
-  tree.open_project(out);
-  if (!w.fields.empty()) tree.parse_string(display_script(data, w.fields.size()));
+  tree.info("cvtmesh: wrote " + out + "; showing it in place of the model");
+  tree.parse_string(load_script(data, out, w.fields.size()));
   return 0;
 }
 

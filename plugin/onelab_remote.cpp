@@ -98,13 +98,6 @@ void RemoteOnelab::error(const std::string& message) {
 void RemoteOnelab::progress(const std::string& message) {
   impl_->client->sendProgress(message);
 }
-void RemoteOnelab::open_project(const std::string& path) {
-  impl_->client->sendOpenProjectRequest(path);
-}
-void RemoteOnelab::merge_file(const std::string& path) {
-  impl_->client->sendMergeFileRequest(path);
-}
-
 void RemoteOnelab::parse_string(const std::string& text) {
   impl_->client->sendParseStringRequest(text);
 }

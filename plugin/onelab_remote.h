@@ -29,11 +29,7 @@ class RemoteOnelab : public OnelabTree {
   void error(const std::string& message) override;
   void progress(const std::string& message) override;
 
-  // Loading a file into the GUI: as the new model (the current one, its CAD included, is
-  // replaced), or merged into a new model drawn over the current one.
-  void open_project(const std::string& path);
-  void merge_file(const std::string& path);
-  // Has the GUI parse .geo-language text (e.g. options: "View[1].Visible = 0;").
+  // Has the GUI parse .geo-language text ("Delete Model; Merge \"f.msh\";", options, ...).
   void parse_string(const std::string& text);
 
  private:

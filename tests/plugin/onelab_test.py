@@ -4,11 +4,12 @@
 - Batch: `gmsh model.geo cvtmesh.exe -run` (Gmsh's batch ONELAB loop: initialize, check,
   compute over the socket; a client is picked for batch runs by opening an executable file named
   *.exe, hence a symlink). The client optimizes Gmsh's mesh (Gmsh/MshFileName), writes
-  model_cvt.msh with the quality views and has Gmsh open it; the results land in Gmsh's ONELAB
-  database (saved as model_cvt.db), equal to what the written mesh measures.
+  model_cvt.msh with the quality views and has Gmsh load it in place of the model; the results
+  land in Gmsh's ONELAB database (saved as model.db), equal to what the written mesh measures.
 - GUI: the documented registration (-setstring Solver.Name0/Solver.Executable0), the solver picked
   in Modules > Solver and Run pressed by synthetic clicks; the optimized mesh replaces the model
-  in the window. Screenshots before/after are kept as artifacts.
+  in the window; pressing Run again re-meshes the model and optimizes again, without errors.
+  Screenshots before/after are kept as artifacts.
 - Without -onelab, the client explains how to register it.
 
 Environment: CVTMESH_ONELAB (the client), CVTMESH_CLI (cvtmesh, to measure files),
@@ -106,7 +107,7 @@ class Onelab(unittest.TestCase):
         msh_out = os.path.join(self.dir, "model_cvt.msh")
         self.assertIn(f"cvtmesh - cvtmesh: optimizing {msh_in}", log)  # client messages
         self.assertIn(f"Reading '{msh_out}'", log)  # Gmsh opened the result
-        self.check_results(os.path.join(self.dir, "model_cvt.db"), msh_in, msh_out, 8)
+        self.check_results(os.path.join(self.dir, "model.db"), msh_in, msh_out, 8)
         # The result carries the quality views and the model's physical groups.
         with open(msh_out, errors="replace") as f:
             text = f.read()
@@ -119,12 +120,21 @@ class Onelab(unittest.TestCase):
         model = write_model(self.dir, 8)
         view = os.path.join(self.dir, "view.opt")  # a 3/4 view of the cube for the screenshots
         with open(view, "w") as f:
-            f.write("General.Trackball = 0; General.RotationX = -65; General.RotationZ = -115;\n")
-        log = open(os.path.join(self.dir, "gmsh.log"), "w")
+            f.write("General.Trackball = 0; General.RotationX = -65; General.RotationZ = -115;\n"
+                    "General.ScaleX = 0.7; General.ScaleY = 0.7; General.ScaleZ = 0.7;\n")
+        log_path = os.path.join(self.dir, "gmsh.log")
+        log = open(log_path, "w")
         gmsh = subprocess.Popen(["gmsh", model, "-clscale", "2.5", "-option", view,
                                  "-setstring", "Solver.Name0", "cvtmesh",
-                                 "-setstring", "Solver.Executable0", CLIENT],
+                                 "-setstring", "Solver.Executable0", CLIENT,
+                                 "-setnumber", "General.Terminal", "1"],
                                 cwd=self.dir, env=self.env, stdout=log, stderr=subprocess.STDOUT)
+
+        def log_count(text):
+            with open(log_path) as f:
+                return f.read().count(text)
+
+        msh_out = os.path.join(self.dir, "model_cvt.msh")
         try:
             wid = xu.window("Gmsh")
             time.sleep(2.0)
@@ -136,20 +146,24 @@ class Onelab(unittest.TestCase):
             time.sleep(3.0)
             xu.screenshot(os.path.join(art, "onelab_before.png"))
             xu.click(wid, 120, height - 39)  # Run (compute)
-            msh_out = os.path.join(self.dir, "model_cvt.msh")
-            xu.wait_for(lambda: "model_cvt.msh" in xu.window_name(wid), 120,
-                        "Gmsh to open model_cvt.msh")
-            db = os.path.join(self.dir, "model_cvt.db")  # saved after the computation
-            xu.wait_for(lambda: os.path.exists(db), 60, "Gmsh to save its database")
+            # Gmsh loads the result, then saves its database: the computation is over.
+            xu.wait_for(lambda: log_count("Saving database") >= 1, 120, "the first run")
+            self.assertEqual(log_count(f"Reading '{msh_out}'"), 1)
             time.sleep(2.0)
             xu.screenshot(os.path.join(art, "onelab_after.png"))
-            self.assertTrue(os.path.exists(msh_out))
+            self.check_results(os.path.join(self.dir, "model.db"),
+                               os.path.join(self.dir, "model.msh"), msh_out, 8)
+            # Run again: Gmsh re-meshes the model, the client optimizes and shows it again.
+            xu.click(wid, 120, height - 39)
+            xu.wait_for(lambda: log_count("Saving database") >= 2, 120, "the second run")
+            self.assertEqual(log_count(f"Reading '{msh_out}'"), 2)
+            self.assertEqual(log_count("cvtmesh - cvtmesh: optimizing"), 2)
+            self.assertEqual(log_count("Error"), 0)
+            self.assertIn("model.geo", xu.window_name(wid))  # the project is still the model
         finally:
             gmsh.kill()
             gmsh.wait()
             log.close()
-        self.check_results(os.path.join(self.dir, "model_cvt.db"),
-                           os.path.join(self.dir, "model.msh"), msh_out, 8)
 
     def test_without_gmsh_it_explains_itself(self):
         run = subprocess.run([CLIENT], capture_output=True, text=True, timeout=30)
