@@ -109,7 +109,7 @@ void register_compare(CLI::App& app) {
          cmp.run(init, "combined", "CombOpt", "combopt", 0, 0, comb);
          const auto [t1, i1] = cmp.run(init, "cvdt", "CVDT", "cvdt", 0, 0, cvdt);
          const auto [t2, i2] = cmp.run(cvdt, "swap", "CVDT+SWAP", "cvdt_swap", t1, i1, cvdt_swap);
-         cmp.run(cvdt_swap, "combined", "CVDT+SWAP+smooth", "cvdt_swap_smooth", t2, i2, polished);
+         cmp.run(cvdt_swap, "smooth", "CVDT+SWAP+smooth", "cvdt_swap_smooth", t2, i2, polished);
          if (co->baselines) {
            MeshData g = init;
            auto t = std::chrono::steady_clock::now();

@@ -8,7 +8,8 @@
 stl = DefineString[StrCat(CurrentDir, "/../../shared/data/femur_bmf_vhp_female_R.stl"), Name "cvtmesh/Geometry/femur STL"];
 DefineConstant[
   h = {0.0048, Name "cvtmesh/Geometry/h (m)"},
-  angle = {40, Name "cvtmesh/Geometry/feature angle (deg)"}
+  angle = {40, Name "cvtmesh/Geometry/feature angle (deg)"},
+  surface_algorithm = {5, Name "cvtmesh/Geometry/surface mesher (5 Delaunay, 6 Frontal-Delaunay)"}
 ];
 Merge StrCat(stl);
 ClassifySurfaces{angle * Pi / 180, 1, 1, Pi};
@@ -20,5 +21,6 @@ Physical Volume("bone", 2) = {1};
 Mesh.MeshSizeMin = 0;
 Mesh.MeshSizeMax = h;
 Mesh.MeshSizeFromCurvature = 0;
-// Delaunay for the re-parametrized patches: as good here and ~20x faster than Frontal-Delaunay.
-Mesh.Algorithm = 5;
+// Delaunay (5) for the re-parametrized patches is ~15x faster than Frontal-Delaunay (6), which
+// gives somewhat better surface triangles (min Q 0.10 vs 0.05).
+Mesh.Algorithm = surface_algorithm;

@@ -292,7 +292,11 @@ void finish3(TetMesh& m, ModelInfo& info, const std::string& what) {
   m.tri_surface = std::move(surf);
   m.tri_tags = std::move(tags);
 
-  if (info.entities.empty()) classify3(m, face_slot);
+  if (info.entities.empty() || static_cast<int>(m.vclass.size()) != m.nb_vertices()) {
+    info.entities.clear();
+    info.extra.clear();
+    classify3(m, face_slot);
+  }
   const MeshCheck c = check_mesh(m);
   if (!c.ok) throw InputError(what + ": invalid tetrahedral mesh: " + check_summary(c));
 }
@@ -458,7 +462,11 @@ void finish2(TriMesh2& m, ModelInfo& info, const std::string& what) {
   m.edge_curve = std::move(curve);
   m.edge_tags = std::move(tags);
 
-  if (info.entities.empty()) classify2(m);
+  if (info.entities.empty() || static_cast<int>(m.vclass.size()) != m.nb_vertices()) {
+    info.entities.clear();
+    info.extra.clear();
+    classify2(m);
+  }
   const MeshCheck c = check_mesh(m);
   if (!c.ok) throw InputError(what + ": invalid triangle mesh: " + check_summary(c));
 }

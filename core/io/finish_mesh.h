@@ -17,9 +17,10 @@ namespace cvtmesh {
 //  - region/surface/curve tags <= 0 get a fresh positive tag; facets (triangles in 3D, edges in
 //    2D) with tag <= 0 inside one region are dropped; boundary facets missing from the input get a
 //    fresh tag, missing interfaces between two regions another one;
-//  - when data.model() has no entities: classifies the vertices (interior / on one surface / on a
-//    feature curve where two surfaces meet / corner) and creates the matching Gmsh entities, with
-//    their boundaries, plus line and point elements for the feature curves and corners;
+//  - when data.model() has no entities (or no classification): classifies the vertices
+//    (interior / on one surface / on a feature curve where two surfaces meet / corner) and creates
+//    the matching Gmsh entities, with their boundaries, plus line and point elements for the
+//    feature curves and corners;
 //  - builds the adjacency and runs check_mesh.
 // Throws InputError("<what>: <problem>").
 void finish_mesh(MeshData& data, const std::string& what);

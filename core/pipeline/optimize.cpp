@@ -89,13 +89,27 @@ void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   r.converged = st.converged;
 }
 
-// CVDT + SWAP, then the guarded smoothing + dihedral-flip polish of the classical method on the
-// result (removes the last near-boundary slivers that flips alone cannot).
+// The polish: guarded Laplacian passes (never lower a star's minimum Q) and flips improving the
+// minimal dihedral angle that may not lower the minimum Q either, iterated (the CombOpt operators
+// with a Q guard on the flips).
+void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  CombinedOptions co;
+  co.max_iterations = o.max_iterations;
+  co.swap.use_guard = true;
+  co.swap.guard_measure = Measure::kQ;
+  co.swap.guard_floor = o.polish_q_floor;
+  const CombinedStats st = combined_optimize(
+      mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
+  r.iterations = st.iterations;
+  r.converged = st.converged;
+}
+
+// CVDT + SWAP, then the polish (removes near-boundary slivers that flips alone cannot).
 void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   run_cvdt_swap3(mesh, o, r);
   const int lloyd_iterations = r.iterations;
   OptimizeResult polish;
-  run_combined3(mesh, o, polish);
+  run_polish3(mesh, o, polish);
   r.iterations = lloyd_iterations;
 }
 
@@ -107,6 +121,7 @@ const std::map<std::string, Method3>& methods3() {
       {"cvdt+swap+smooth", run_cvdt_swap_smooth3},
       {"swap", run_swap3},
       {"combined", run_combined3},
+      {"smooth", run_polish3},
   };
   return m;
 }
@@ -116,7 +131,7 @@ const std::map<std::string, Method3>& methods3() {
 std::vector<std::string> methods_for_dim(int dim) {
   std::vector<std::string> out;
   if (dim == 3) {
-    for (const char* name : {"cvdt+swap+smooth", "cvdt+swap", "cvdt", "combined", "swap"})
+    for (const char* name : {"cvdt+swap+smooth", "cvdt+swap", "cvdt", "combined", "swap", "smooth"})
       if (methods3().count(name)) out.push_back(name);
   }
   return out;

@@ -1,6 +1,6 @@
 // The named methods users pick. 3D: cvdt (Lloyd CVDT), cvdt+swap (the paper's CVDT+SWAP),
 // cvdt+swap+smooth (CVDT+SWAP then the guarded smoothing + dihedral flips polish), combined (the
-// classical CombOpt), swap (flips only). 2D: cvdt, dl, wdl.
+// classical CombOpt), swap (flips only), smooth (the polish alone). 2D: cvdt, dl, wdl.
 // One entry point for the CLI, the GUI panel and the scripting front ends.
 #pragma once
 #include <functional>
@@ -31,6 +31,9 @@ struct OptimizeOptions {
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";
   std::function<double(const double* x)> size_function;  // x has d coordinates
+  // The smooth polish's dihedral flips may lower a tet's Q, but never below min(its old
+  // minimum, this floor).
+  double polish_q_floor = 0.4;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   std::function<void(const OptimizeProgress&)> progress;

@@ -128,6 +128,11 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
           plan.measure = measure;
         }
         if (!accept_swap(plan.old_min, plan.new_min, criterion)) return false;
+        if (options.use_guard) {
+          const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
+          const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
+          if (guard_new < std::min(guard_old, options.guard_floor)) return false;
+        }
         if (!have_best || plan.new_min > best.new_min) {
           best = std::move(plan);
           have_best = true;

@@ -25,6 +25,14 @@ struct SwapOptions {
   bool flip23 = true;        // try 2-3 flips on the faces
   bool remove_edges = true;  // try edge removals (3-2 flips included) on the edges
   bool compact = true;       // remove the dead slots at the end (compact_tets)
+  // Optional second measure that must not get worse: a swap is also refused when the minimum of
+  // the new tets in `guard_measure` is below that of the old ones (e.g. dihedral-angle flips that
+  // must not lower the minimum Q).
+  bool use_guard = false;
+  Measure guard_measure = Measure::kQ;
+  // The guard only protects values below this floor: the new minimum must be at least
+  // min(old minimum, guard_floor) (-inf: must not decrease at all).
+  double guard_floor = -std::numeric_limits<double>::infinity();
 };
 
 struct SwapStats {

@@ -21,10 +21,25 @@ std::string shared_path(const std::string& rel) {
   return std::string(CVTMESH_SHARED_DIR) + "/" + rel;
 }
 
+namespace {
+// Temporary directories made by the tests, removed when the test program exits.
+std::vector<std::string>& made_dirs() {
+  static std::vector<std::string> dirs;
+  return dirs;
+}
+void remove_made_dirs() {
+  std::error_code ec;
+  for (const auto& d : made_dirs()) std::filesystem::remove_all(d, ec);
+}
+}  // namespace
+
 std::string temp_dir() {
   char tmpl[] = "/tmp/cvtmesh-test-XXXXXX";
   const char* d = mkdtemp(tmpl);
-  return d ? std::string(d) : std::string("/tmp");
+  if (!d) return std::string("/tmp");
+  if (made_dirs().empty()) std::atexit(remove_made_dirs);
+  made_dirs().push_back(d);
+  return std::string(d);
 }
 
 int run(const std::string& cmd, std::string* output) {
@@ -101,7 +116,8 @@ TetMesh delaunay_of_points(const std::vector<double>& xyz) {
   for (int t = 0; t < out.numberoftetrahedra; ++t) {
     int v[4];
     for (int k = 0; k < 4; ++k) v[k] = out.tetrahedronlist[4 * t + k];
-    if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0) std::swap(v[2], v[3]);
+    if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0)
+      std::swap(v[2], v[3]);
     m.tets.insert(m.tets.end(), v, v + 4);
     m.tet_region.push_back(1);
   }

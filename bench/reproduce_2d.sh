@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Runs every 2D experiment of docs/reproduction-2d.md (Release build in build/ expected):
+# the main tables and pictures, the accelerated-Lloyd variant, the seed and grading sweeps.
+# Usage: bench/reproduce_2d.sh [OUT_DIR]   (default: /tmp/cvtmesh-reproduce-2d; pictures go to
+# docs/img/2d). Takes a few minutes on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B=${BUILD_DIR:-build}/bench/reproduce_2d
+OUT=${1:-/tmp/cvtmesh-reproduce-2d}
+mkdir -p "$OUT"
+$B --out docs/img/2d > "$OUT/tables.md"
+$B --examples washer --methods cvt --relaxation 1.5 --anderson 5 > "$OUT/washer_cvt_accelerated.md"
+$B --examples quad --methods cvt --relaxation 1.5 --anderson 5 > "$OUT/quad_cvt_accelerated.md"
+for s in 2 3 4 5; do
+  $B --examples washer --methods cvt --seed $s > "$OUT/washer_cvt_seed$s.md"
+  $B --examples washer --methods cvt --seed $s --relaxation 1.5 --anderson 5 > "$OUT/washer_cvt_accelerated_seed$s.md"
+done
+for hg in "0.06 0.06" "0.1 0.1" "0.08 0.12"; do
+  set -- $hg
+  $B --examples washer --methods cvt --washer-h0 $1 --washer-g $2 > "$OUT/washer_cvt_h0_$1_g_$2.md"
+done
+echo "results in $OUT"

@@ -1,0 +1,154 @@
+#include "core/cvt/lloyd_optimize_2d.h"
+
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "core/cvt/anderson.h"
+#include "core/cvt/voronoi_centroids2d.h"
+#include "core/delaunay/cdt2d_locate.h"
+#include "core/delaunay/cdt2d_remesh.h"
+#include "core/mesh/check_mesh.h"
+#include "core/mesh/face_key.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+std::string first_problem(const MeshCheck& c) {
+  return c.problems.empty() ? "" : c.problems[0];
+}
+
+class Lloyd2dProblem {
+ public:
+  Lloyd2dProblem(TriMesh2& mesh, const Lloyd2dOptions& o)
+      : mesh_(mesh), o_(o), sizing_(mesh, o.sizing), mixer_(o.anderson_depth) {
+    std::vector<char> on_edge(mesh.nb_vertices(), 0);
+    for (int v : mesh.edges) on_edge[v] = 1;
+    for (int v = 0; v < mesh.nb_vertices(); ++v)
+      if (mesh.vclass[v].dim == 2 && !on_edge[v]) free_.push_back(v);
+    if (!sizing_.is_uniform()) density_ = [this](const double* x) { return sizing_.density(x); };
+  }
+
+  LloydStep step() {
+    LloydStep s;
+    s.nb_free = static_cast<int>(free_.size());
+    const std::vector<VoronoiCell2d> cells = voronoi_centroids2d(mesh_, density_);
+    for (const VoronoiCell2d& c : cells) s.energy += c.energy;
+    const std::size_t n = free_.size();
+    std::vector<double> z(2 * n), c(2 * n);
+    double D = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const int v = free_[k];
+      const double* p = mesh_.point(v);
+      const double h = sizing_.size(p);
+      for (int d = 0; d < 2; ++d) z[2 * k + d] = p[d], c[2 * k + d] = cells[v].centroid[d];
+      const double dx = c[2 * k] - z[2 * k], dy = c[2 * k + 1] - z[2 * k + 1];
+      D += (dx * dx + dy * dy) / (h * h);  // the paper's D: the full move to the centroid
+    }
+    s.D = n ? D / static_cast<double>(n) : 0;
+
+    const bool accelerated = o_.anderson_depth > 0;
+    std::vector<double> next;
+    if (accelerated && have_accepted_ && !just_restarted_ &&
+        s.energy > accepted_energy_ * (1 + 1e-12)) {
+      // The accelerated step raised the energy: take the plain (relaxed) Lloyd step from the
+      // last accepted configuration instead (its targets were checked on its mesh), so the
+      // accepted energies never increase.
+      s.restarted = true;
+      just_restarted_ = true;  // the plain step is accepted as it comes (no restart loop)
+      mixer_.reset();
+      next = accepted_plain_;
+    } else {
+      just_restarted_ = false;
+      prepare_safeguard();
+      std::vector<double> g(2 * n);
+      for (std::size_t k = 0; k < 2 * n; ++k) g[k] = z[k] + o_.relaxation * (c[k] - z[k]);
+      std::vector<double> plain(2 * n);
+      for (std::size_t k = 0; k < n; ++k)
+        if (!safe_target(free_[k], &g[2 * k], &plain[2 * k])) ++s.nb_limited;
+      next = plain;
+      if (accelerated) {
+        const std::vector<double> mixed = mixer_.next(z, g);
+        for (std::size_t k = 0; k < n; ++k) safe_target(free_[k], &mixed[2 * k], &next[2 * k]);
+        have_accepted_ = true;
+        accepted_energy_ = s.energy;
+        accepted_plain_ = std::move(plain);
+      }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double* p = mesh_.point(free_[k]);
+      p[0] = next[2 * k], p[1] = next[2 * k + 1];
+    }
+    cdt2d_remesh(mesh_);
+    return s;
+  }
+
+ private:
+  // Constrained slots and a triangle at each vertex of the current mesh, for safe_target.
+  void prepare_safeguard() {
+    const int nt = mesh_.nb_tris();
+    std::unordered_set<EdgeKey, EdgeKeyHash> ce;
+    for (int e = 0; e < mesh_.nb_edges(); ++e)
+      ce.insert(edge_key(mesh_.edges[2 * e], mesh_.edges[2 * e + 1]));
+    stop_.assign(3 * static_cast<std::size_t>(nt), 0);
+    vtri_.assign(mesh_.nb_vertices(), -1);
+    for (int t = 0; t < nt; ++t) {
+      const int* tv = &mesh_.tris[3 * t];
+      if (tv[0] < 0) continue;
+      for (int k = 0; k < 3; ++k) {
+        vtri_[tv[k]] = t;
+        stop_[3 * t + k] = ce.count(edge_key(tv[(k + 1) % 3], tv[(k + 2) % 3])) ? 1 : 0;
+      }
+    }
+  }
+
+  // The move of v towards goal, halved until the point is strictly inside v's surface (reached
+  // from v's triangles without crossing a constrained edge, off every constrained edge and other
+  // vertex). Writes the position (v's own if every try failed); false if shortened.
+  bool safe_target(int v, const double* goal, double* out) const {
+    const double* z = mesh_.point(v);
+    double t = 1;
+    for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
+      const double p[2] = {z[0] + t * (goal[0] - z[0]), z[1] + t * (goal[1] - z[1])};
+      const Locate2dResult r = locate2d(mesh_, p, vtri_[v], stop_);
+      if (r.tri >= 0 && (r.on_vertex < 0 || r.on_vertex == v) &&
+          (r.on_edge < 0 || !stop_[3 * r.tri + r.on_edge])) {
+        out[0] = p[0], out[1] = p[1];
+        return h == 0;
+      }
+    }
+    out[0] = z[0], out[1] = z[1];
+    return false;
+  }
+
+  TriMesh2& mesh_;
+  Lloyd2dOptions o_;
+  SizingField2d sizing_;
+  std::function<double(const double*)> density_;
+  std::vector<int> free_;
+  std::vector<char> stop_;
+  std::vector<int> vtri_;
+  AndersonMixer mixer_;
+  bool have_accepted_ = false, just_restarted_ = false;
+  double accepted_energy_ = 0;
+  std::vector<double> accepted_plain_;
+};
+
+}  // namespace
+
+LloydResult lloyd_optimize_2d(TriMesh2& mesh, const Lloyd2dOptions& options,
+                              const std::function<void(const LloydStep&)>& progress) {
+  if (mesh.adj.size() != mesh.tris.size()) build_adjacency2(mesh);
+  const MeshCheck before = check_mesh(mesh);
+  if (!before.ok)
+    throw InputError("lloyd_optimize_2d: invalid input mesh: " + first_problem(before));
+  Lloyd2dProblem problem(mesh, options);
+  LloydResult r = lloyd_iterate(problem, options.lloyd, progress);
+  const MeshCheck after = check_mesh(mesh);
+  if (!after.ok)
+    throw InvariantError("lloyd_optimize_2d: mesh invalid after Lloyd: " + first_problem(after));
+  return r;
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,157 @@
+#include "core/cvt/sizing_field2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+double dist(const double* a, const double* b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1]);
+}
+
+// Mean length of the constrained edges (all edges if there are none).
+double mean_boundary_edge(const TriMesh2& m) {
+  double sum = 0;
+  long n = 0;
+  for (int e = 0; e < m.nb_edges(); ++e, ++n)
+    sum += dist(m.point(m.edges[2 * e]), m.point(m.edges[2 * e + 1]));
+  if (n == 0)
+    for (int t = 0; t < m.nb_tris(); ++t)
+      if (m.tris[3 * t] >= 0)
+        for (int k = 0; k < 3; ++k, ++n)
+          sum += dist(m.point(m.tris[3 * t + k]), m.point(m.tris[3 * t + (k + 1) % 3]));
+  return n ? sum / static_cast<double>(n) : 1.0;
+}
+
+}  // namespace
+
+SizingField2d::SizingField2d(const TriMesh2& mesh, const SizingField2dOptions& o) {
+  if (o.kind == "uniform") {
+    kind_ = Kind::kUniform;
+    h_ = o.h > 0 ? o.h : mean_boundary_edge(mesh);
+    return;
+  }
+  if (o.kind == "function") {
+    if (!o.function) throw std::invalid_argument("sizing \"function\" needs a size function");
+    kind_ = Kind::kFunction;
+    function_ = o.function;
+    return;
+  }
+  if (o.kind != "mesh")
+    throw std::invalid_argument("unknown sizing \"" + o.kind + "\" (uniform, function or mesh)");
+  kind_ = Kind::kMesh;
+  const TriMesh2& bg = o.background ? *o.background : mesh;
+  bg_xy_ = bg.xy;
+  const int nv = bg.nb_vertices();
+  std::vector<double> sum(nv, 0);
+  std::vector<int> cnt(nv, 0);
+  for (int t = 0; t < bg.nb_tris(); ++t) {
+    const int* tv = &bg.tris[3 * t];
+    if (tv[0] < 0) continue;
+    bg_tris_.insert(bg_tris_.end(), tv, tv + 3);
+    for (int k = 0; k < 3; ++k) {
+      // Each interior edge is seen twice (once per side), boundary edges once: a mean over the
+      // incident triangles' edges, which is what a P1 size should reproduce.
+      const int a = tv[k], b = tv[(k + 1) % 3];
+      const double l = dist(bg.point(a), bg.point(b));
+      sum[a] += l, sum[b] += l, ++cnt[a], ++cnt[b];
+    }
+  }
+  if (bg_tris_.empty()) throw InputError("sizing from a mesh: the mesh has no triangles");
+  bg_h_.resize(nv);
+  for (int v = 0; v < nv; ++v) bg_h_[v] = cnt[v] ? sum[v] / cnt[v] : 0;
+  // Bucket grid of about one triangle per cell.
+  const int nt = static_cast<int>(bg_tris_.size() / 3);
+  double hi[2] = {-std::numeric_limits<double>::infinity(),
+                  -std::numeric_limits<double>::infinity()};
+  lo_[0] = lo_[1] = std::numeric_limits<double>::infinity();
+  for (int v : bg_tris_)
+    for (int k = 0; k < 2; ++k) {
+      lo_[k] = std::min(lo_[k], bg_xy_[2 * v + k]);
+      hi[k] = std::max(hi[k], bg_xy_[2 * v + k]);
+    }
+  const double w = std::max(hi[0] - lo_[0], 1e-300), hgt = std::max(hi[1] - lo_[1], 1e-300);
+  const double side = std::sqrt(w * hgt / nt);
+  nx_ = std::clamp(static_cast<int>(w / side) + 1, 1, 4096);
+  ny_ = std::clamp(static_cast<int>(hgt / side) + 1, 1, 4096);
+  cell_[0] = w / nx_ * (1 + 1e-12), cell_[1] = hgt / ny_ * (1 + 1e-12);
+  auto cell_range = [&](int t, int r[4]) {
+    double blo[2] = {std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::infinity()};
+    double bhi[2] = {-blo[0], -blo[1]};
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 2; ++d) {
+        blo[d] = std::min(blo[d], bg_xy_[2 * bg_tris_[3 * t + k] + d]);
+        bhi[d] = std::max(bhi[d], bg_xy_[2 * bg_tris_[3 * t + k] + d]);
+      }
+    r[0] = std::clamp(static_cast<int>((blo[0] - lo_[0]) / cell_[0]), 0, nx_ - 1);
+    r[1] = std::clamp(static_cast<int>((bhi[0] - lo_[0]) / cell_[0]), 0, nx_ - 1);
+    r[2] = std::clamp(static_cast<int>((blo[1] - lo_[1]) / cell_[1]), 0, ny_ - 1);
+    r[3] = std::clamp(static_cast<int>((bhi[1] - lo_[1]) / cell_[1]), 0, ny_ - 1);
+  };
+  bucket_start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+  int r[4];
+  for (int t = 0; t < nt; ++t) {
+    cell_range(t, r);
+    for (int j = r[2]; j <= r[3]; ++j)
+      for (int i = r[0]; i <= r[1]; ++i) ++bucket_start_[j * nx_ + i + 1];
+  }
+  for (std::size_t c = 1; c < bucket_start_.size(); ++c) bucket_start_[c] += bucket_start_[c - 1];
+  bucket_tris_.resize(bucket_start_.back());
+  std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+  for (int t = 0; t < nt; ++t) {
+    cell_range(t, r);
+    for (int j = r[2]; j <= r[3]; ++j)
+      for (int i = r[0]; i <= r[1]; ++i) bucket_tris_[fill[j * nx_ + i]++] = t;
+  }
+}
+
+double SizingField2d::size(const double* x) const {
+  if (kind_ == Kind::kUniform) return h_;
+  if (kind_ == Kind::kFunction) {
+    const double h = function_(x);
+    if (!(h > 0) || !std::isfinite(h))
+      throw InputError("size function returned " + std::to_string(h) + " at (" +
+                       std::to_string(x[0]) + ", " + std::to_string(x[1]) + "); it must be > 0");
+    return h;
+  }
+  // P1 interpolation in the background triangle containing x (the best candidate of the
+  // nearest non-empty bucket ring if x is outside every triangle).
+  const int ci = std::clamp(static_cast<int>((x[0] - lo_[0]) / cell_[0]), 0, nx_ - 1);
+  const int cj = std::clamp(static_cast<int>((x[1] - lo_[1]) / cell_[1]), 0, ny_ - 1);
+  double best = -std::numeric_limits<double>::infinity(), value = 0;
+  for (int ring = 0; ring < std::max(nx_, ny_); ++ring) {
+    for (int j = std::max(0, cj - ring); j <= std::min(ny_ - 1, cj + ring); ++j)
+      for (int i = std::max(0, ci - ring); i <= std::min(nx_ - 1, ci + ring); ++i) {
+        if (std::max(std::abs(i - ci), std::abs(j - cj)) != ring) continue;
+        const int c = j * nx_ + i;
+        for (int k = bucket_start_[c]; k < bucket_start_[c + 1]; ++k) {
+          const int* tv = &bg_tris_[3 * bucket_tris_[k]];
+          const double* a = &bg_xy_[2 * tv[0]];
+          const double* b = &bg_xy_[2 * tv[1]];
+          const double* d = &bg_xy_[2 * tv[2]];
+          const double det = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+          if (det == 0) continue;
+          double l1 = ((x[0] - a[0]) * (d[1] - a[1]) - (x[1] - a[1]) * (d[0] - a[0])) / det;
+          double l2 = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / det;
+          double l0 = 1 - l1 - l2;
+          const double m = std::min({l0, l1, l2});
+          if (m <= best) continue;
+          best = m;
+          l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
+          const double s = l0 + l1 + l2;
+          value = (l0 * bg_h_[tv[0]] + l1 * bg_h_[tv[1]] + l2 * bg_h_[tv[2]]) / s;
+        }
+      }
+    if (best >= -1e-12 || (best > -std::numeric_limits<double>::infinity() && ring >= 1)) break;
+  }
+  return value;
+}
+
+}  // namespace cvtmesh

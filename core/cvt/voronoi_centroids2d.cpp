@@ -1,0 +1,178 @@
+#include "core/cvt/voronoi_centroids2d.h"
+
+#include <array>
+#include <unordered_set>
+
+#include "core/delaunay/cdt2d.h"
+#include "core/geometry/tet_geometry.h"
+#include "core/mesh/face_key.h"
+
+namespace cvtmesh {
+namespace {
+
+using Pt = std::array<double, 2>;
+
+// Keeps the part of the convex polygon `poly` on the left of the directed line p -> q.
+void clip_left(std::vector<Pt>& poly, const double* p, const double* q, std::vector<Pt>& tmp) {
+  tmp.clear();
+  const std::size_t n = poly.size();
+  if (n == 0) return;
+  const double dx = q[0] - p[0], dy = q[1] - p[1];
+  auto side = [&](const Pt& x) { return dx * (x[1] - p[1]) - dy * (x[0] - p[0]); };
+  double fa = side(poly[n - 1]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Pt& a = poly[(i + n - 1) % n];
+    const Pt& b = poly[i];
+    const double fb = side(b);
+    if ((fa >= 0) != (fb >= 0)) {
+      const double s = fa / (fa - fb);
+      tmp.push_back({a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])});
+    }
+    if (fb >= 0) tmp.push_back(b);
+    fa = fb;
+  }
+  poly.swap(tmp);
+}
+
+// Dunavant's 6-point rule, exact for degree 4: barycentric (a, b, b) permutations.
+constexpr double kW1 = 0.223381589678011, kA1 = 0.108103018168070, kB1 = 0.445948490915965;
+constexpr double kW2 = 0.109951743655322, kA2 = 0.816847572980459, kB2 = 0.091576213509771;
+
+struct Acc {
+  double mass = 0, mx = 0, my = 0, energy = 0;
+};
+
+// Adds the integrals over the convex polygon `poly` (counter-clockwise) around generator z.
+void integrate(const std::vector<Pt>& poly, const double* z,
+               const std::function<double(const double*)>& density, Acc& acc) {
+  for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+    const Pt& a = poly[0];
+    const Pt& b = poly[k];
+    const Pt& c = poly[k + 1];
+    const double area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    if (!(area > 0)) continue;
+    if (!density) {
+      const double g[2] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3};
+      auto d2 = [](const double* u, const double* v) {
+        return (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]);
+      };
+      acc.mass += area;
+      acc.mx += area * g[0];
+      acc.my += area * g[1];
+      acc.energy += area * (d2(g, z) + (d2(a.data(), g) + d2(b.data(), g) + d2(c.data(), g)) / 12);
+      continue;
+    }
+    static const double kBary[6][3] = {{kA1, kB1, kB1}, {kB1, kA1, kB1}, {kB1, kB1, kA1},
+                                       {kA2, kB2, kB2}, {kB2, kA2, kB2}, {kB2, kB2, kA2}};
+    for (int q = 0; q < 6; ++q) {
+      const double w = area * (q < 3 ? kW1 : kW2);
+      const double x[2] = {kBary[q][0] * a[0] + kBary[q][1] * b[0] + kBary[q][2] * c[0],
+                           kBary[q][0] * a[1] + kBary[q][1] * b[1] + kBary[q][2] * c[1]};
+      const double wr = w * density(x);
+      acc.mass += wr;
+      acc.mx += wr * x[0];
+      acc.my += wr * x[1];
+      acc.energy += wr * ((x[0] - z[0]) * (x[0] - z[0]) + (x[1] - z[1]) * (x[1] - z[1]));
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<VoronoiCell2d> voronoi_centroids2d(
+    const TriMesh2& mesh, const std::function<double(const double*)>& density) {
+  const int nv = mesh.nb_vertices(), nt = mesh.nb_tris();
+  std::vector<VoronoiCell2d> cells(nv);
+
+  // Voronoi regions: the circumcentres of the Delaunay triangles around each vertex, in
+  // counter-clockwise order (every input vertex is interior to the super-triangle).
+  const Cdt2dResult dt = cdt2d(mesh.xy, {});
+  const int ndt = static_cast<int>(dt.tris.size() / 3);
+  std::vector<Pt> cc(ndt);
+  for (int t = 0; t < ndt; ++t)
+    cc[t] = tri_circumcenter2d(&dt.xy[2 * dt.tris[3 * t]], &dt.xy[2 * dt.tris[3 * t + 1]],
+                               &dt.xy[2 * dt.tris[3 * t + 2]]);
+  std::vector<int> dt_vtri(nv + 3, -1);
+  for (int t = 0; t < ndt; ++t)
+    for (int k = 0; k < 3; ++k) dt_vtri[dt.tris[3 * t + k]] = t;
+
+  // Mesh: which slots are constrained.
+  std::vector<char> cons(3 * static_cast<std::size_t>(nt), 0);
+  {
+    std::unordered_set<EdgeKey, EdgeKeyHash> ce;
+    for (int e = 0; e < mesh.nb_edges(); ++e)
+      ce.insert(edge_key(mesh.edges[2 * e], mesh.edges[2 * e + 1]));
+    for (int t = 0; t < nt; ++t) {
+      const int* tv = &mesh.tris[3 * t];
+      if (tv[0] < 0) continue;
+      for (int k = 0; k < 3; ++k) {
+        cons[3 * t + k] = ce.count(edge_key(tv[(k + 1) % 3], tv[(k + 2) % 3])) ? 1 : 0;
+      }
+    }
+  }
+  // Triangles around each vertex (seeds of the search): CSR.
+  std::vector<int> start(nv + 1, 0), around;
+  for (int t = 0; t < nt; ++t)
+    if (mesh.tris[3 * t] >= 0)
+      for (int k = 0; k < 3; ++k) ++start[mesh.tris[3 * t + k] + 1];
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  around.resize(start[nv]);
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int t = 0; t < nt; ++t)
+      if (mesh.tris[3 * t] >= 0)
+        for (int k = 0; k < 3; ++k) around[fill[mesh.tris[3 * t + k]]++] = t;
+  }
+
+  std::vector<int> stamp(nt, -1), queue;
+  std::vector<Pt> region, piece, tmp;
+  for (int i = 0; i < nv; ++i) {
+    const double* z = mesh.point(i);
+    if (start[i] == start[i + 1]) {  // not used by any triangle: an empty cell
+      cells[i].centroid[0] = z[0], cells[i].centroid[1] = z[1];
+      continue;
+    }
+    // Voronoi region of i.
+    region.clear();
+    const int t0 = dt_vtri[i];
+    int t = t0;
+    do {
+      region.push_back(cc[t]);
+      int k = 0;
+      while (dt.tris[3 * t + k] != i) ++k;
+      t = dt.adj[3 * t + (k + 1) % 3] / 3;
+    } while (t != t0 && static_cast<int>(region.size()) <= ndt);
+    // Breadth-first search over the mesh from the triangles around i.
+    Acc acc;
+    queue.clear();
+    for (int k = start[i]; k < start[i + 1]; ++k)
+      if (stamp[around[k]] != i) stamp[around[k]] = i, queue.push_back(around[k]);
+    for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+      const int tt = queue[qi];
+      const int* tv = &mesh.tris[3 * tt];
+      piece = region;
+      for (int k = 0; k < 3 && piece.size() >= 3; ++k)
+        clip_left(piece, mesh.point(tv[k]), mesh.point(tv[(k + 1) % 3]), tmp);
+      if (piece.size() < 3) continue;
+      integrate(piece, z, density, acc);
+      for (int k = 0; k < 3; ++k) {
+        const int o = mesh.adj[3 * tt + k];
+        if (o < 0 || cons[3 * tt + k] || stamp[o / 3] == i) continue;
+        stamp[o / 3] = i;
+        queue.push_back(o / 3);
+      }
+    }
+    VoronoiCell2d& c = cells[i];
+    c.mass = acc.mass;
+    c.energy = acc.energy;
+    if (acc.mass > 0) {
+      c.centroid[0] = acc.mx / acc.mass;
+      c.centroid[1] = acc.my / acc.mass;
+    } else {
+      c.centroid[0] = z[0], c.centroid[1] = z[1];
+    }
+  }
+  return cells;
+}
+
+}  // namespace cvtmesh

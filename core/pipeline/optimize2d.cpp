@@ -1,0 +1,74 @@
+#include "core/pipeline/optimize2d.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "core/cvt/lloyd_optimize_2d.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/smoothing/dl_optimize_2d.h"
+#include "core/smoothing/wdl_optimize_2d.h"
+#include "core/swap/flip2d_pass.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+
+std::vector<std::string> methods_2d() {
+  return {"cvdt", "cvdt+swap", "dl", "wdl"};
+}
+
+OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
+  const std::string& method = options.method;
+  if (method != "cvdt" && method != "cvdt+swap" && method != "dl" && method != "wdl")
+    throw std::invalid_argument("method \"" + method +
+                                "\" does not apply to a 2D mesh (use cvdt, cvdt+swap, dl or wdl)");
+  const auto t0 = std::chrono::steady_clock::now();
+  OptimizeResult r;
+  r.before = quality_stats(mesh, "before");
+  const TriMesh2 input = mesh;
+
+  SizingField2dOptions sizing;
+  sizing.kind = options.sizing;
+  sizing.function = options.size_function;
+  LloydOptions loop;
+  loop.max_iterations = options.max_iterations;
+  loop.tolerance = options.tolerance;
+  const std::string phase = method == "dl" ? "dl" : method == "wdl" ? "wdl" : "lloyd";
+  std::function<void(const LloydStep&)> progress;
+  if (options.progress)
+    progress = [&](const LloydStep& s) {
+      OptimizeProgress p;
+      p.phase = phase;
+      p.iteration = s.iteration;
+      p.D = s.D;
+      p.energy = s.energy;
+      const QualityStats q = quality_stats(mesh, "");
+      p.q_min = q.q_min;
+      p.q_avg = q.q_avg;
+      p.restarted = s.restarted;
+      options.progress(p);
+    };
+
+  LloydResult lr;
+  if (phase == "lloyd") {
+    Lloyd2dOptions lo;
+    lo.lloyd = loop;
+    lo.sizing = sizing;
+    lo.relaxation = options.relaxation;
+    lo.anderson_depth = options.anderson_depth;
+    lr = lloyd_optimize_2d(mesh, lo, progress);
+    if (method == "cvdt+swap") flip2d_pass(mesh, {.criterion = FlipCriterion2d::kQuality});
+  } else {
+    Smooth2dOptions so;
+    so.loop = loop;
+    so.sizing = sizing;
+    lr = phase == "dl" ? dl_optimize_2d(mesh, so, progress) : wdl_optimize_2d(mesh, so, progress);
+  }
+  if (options.verify) verify_optimized(input, mesh);
+  r.after = quality_stats(mesh, method);
+  r.iterations = lr.iterations;
+  r.converged = lr.converged;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace cvtmesh
