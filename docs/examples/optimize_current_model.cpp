@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
     // The model now holds the optimized mesh; write it with the quality views.
     gmsh::option::setNumber("Mesh.SaveAll", 0);  // physical groups decide what is saved
     gmsh::write(out);
-    gmsh::option::setNumber("PostProcessing.SaveMesh", 0);
+    gmsh::option::setNumber("PostProcessing.SaveMesh", 0);  // the mesh is in the file already
+    gmsh::option::setNumber("PostProcessing.SaveInterpolationMatrices", 0);
     for (int v : r.views) gmsh::view::write(v, out, true);
     std::cout << "wrote " << out << "\n";
   } catch (const std::exception& e) {

@@ -33,7 +33,8 @@ for row in ("number_of_elements", "q_min", "average_quality", "bad_elements_pct"
 
 # The model holds the optimized mesh: write it, then append the quality views to the same file.
 gmsh.write(out)
-gmsh.option.setNumber("PostProcessing.SaveMesh", 0)
+gmsh.option.setNumber("PostProcessing.SaveMesh", 0)  # the mesh is in the file already
+gmsh.option.setNumber("PostProcessing.SaveInterpolationMatrices", 0)
 for view in table["views"]:
     gmsh.view.write(view, out, append=True)
 print("wrote", out)

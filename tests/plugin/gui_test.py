@@ -5,6 +5,7 @@
   shown before is the "before" of the run, the run raises it, screenshots before/after are kept
   as artifacts.
 - Run triggered programmatically (--run-on-start, the same ONELAB action a press sets).
+- Stop (the Run button while running) ends a long run; the mesh is left alone.
 - A model that cannot be read: the error reaches the console and the result file, no crash.
 
 Environment: CVTMESH_GUI (the executable), CVTMESH_SOURCE_DIR, CVTMESH_ARTIFACTS (screenshots).
@@ -109,6 +110,20 @@ class Gui(unittest.TestCase):
         self.assertEqual(run["result"]["iterations"], 8)
         self.assertGreater(run["result"]["after"]["average_quality"],
                            run["result"]["before"]["average_quality"])
+
+    def test_stop_button_ends_a_long_run(self):
+        # Tolerance 0 never converges: 1000 iterations would take minutes.
+        self.start("--method", "cvdt", "--tolerance", "0", "--max-iterations", "1000",
+                   "--run-on-start", "--exit-after-run", "0")
+        wid = xu.window("Gmsh")
+        self.result_of("optimize", timeout=60, keys=("status",))  # running
+        time.sleep(1.0)
+        _, height = xu.window_size(wid)
+        xu.click(wid, MENU_WIDTH - 80, height - 39)  # the Run button reads Stop while running
+        run = self.result_of("optimize", timeout=60)
+        status, out = self.finish()
+        self.assertEqual(status, 1, out)
+        self.assertIn("stopped; the mesh was left unchanged", run["error"])
 
     def test_unreadable_model_is_reported_not_crashed(self):
         missing = os.path.join(self.tmp.name, "missing.geo")
