@@ -55,12 +55,12 @@ void register_optimize(CLI::App& app) {
          QualityTable t;
          QualityStats before = r.before, after = r.after;
          before.label = "input";
-         after.label = opt->method;
+         after.label = r.method;
          after.extra.push_back({"iterations", static_cast<double>(r.iterations)});
          after.extra.push_back({"seconds", r.seconds});
          t.columns = {before, after};
          if (!*quiet) std::cerr << t.to_text();
-         std::cerr << "cvtmesh: wrote " << out->path << " (" << opt->method << ", " << r.iterations
+         std::cerr << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
                    << " iterations, " << (r.converged ? "converged" : "not converged") << ")\n";
          return 0;
        }});

@@ -8,6 +8,7 @@
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/pipeline/combined_optimize.h"
+#include "core/pipeline/optimize2d.h"
 #include "core/swap/swap_slivers.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
@@ -130,6 +131,7 @@ const std::map<std::string, Method3>& methods3() {
 
 std::vector<std::string> methods_for_dim(int dim) {
   std::vector<std::string> out;
+  if (dim == 2) return methods_2d();
   if (dim == 3) {
     for (const char* name : {"cvdt+swap+smooth", "cvdt+swap", "cvdt", "combined", "swap", "smooth"})
       if (methods3().count(name)) out.push_back(name);
@@ -148,8 +150,14 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
     it->second(data.tet, o, r);
     if (o.verify) verify_optimized(input, data.tet);
     r.after = quality_stats(data.tet, o.method);
+    r.method = o.method;
   } else {
-    throw std::invalid_argument("no 2D method '" + o.method + "' available");
+    // 2D: the default 3D method name maps to the 2D CVT.
+    OptimizeOptions o2 = o;
+    if (o2.method == "cvdt+swap+smooth") o2.method = "cvdt";
+    OptimizeResult r2 = optimize_2d(data.tri, o2);
+    r2.method = o2.method;
+    return r2;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;

@@ -44,6 +44,7 @@ struct OptimizeResult {
   int iterations = 0;
   bool converged = false;
   double seconds = 0;
+  std::string method;  // the method that ran (a 3D default name maps to "cvdt" in 2D)
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces

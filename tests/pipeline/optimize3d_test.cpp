@@ -1,0 +1,63 @@
+// The 3D methods through optimize(): every region of a multi-region model, interfaces and
+// physical groups kept, the invariants verified at the end of each run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <tuple>
+
+#include "core/io/read_mesh.h"
+#include "core/mesh/check_mesh.h"
+#include "core/pipeline/optimize.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+MeshData two_region_cube_sphere() {
+  ReadOptions ro;
+  ro.gmsh_optimize = false;
+  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}, {"two_regions", 1}};
+  return read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+}
+
+TEST(Optimize3d, EveryMethodKeepsRegionsInterfacesAndGroupsOfTheTwoRegionModel) {
+  const MeshData init = two_region_cube_sphere();
+  ASSERT_EQ(region_volumes(init.tet).size(), 2u);
+  for (const char* method :
+       {"cvdt", "cvdt+swap", "cvdt+swap+smooth", "combined", "swap", "smooth"}) {
+    MeshData d = init;
+    OptimizeOptions o;
+    o.method = method;
+    o.max_iterations = 6;
+    const OptimizeResult r = optimize(d, o);  // runs verify_optimized (throws on a violation)
+    EXPECT_EQ(r.method, method);
+    EXPECT_TRUE(check_mesh(d.tet).ok) << method;
+    EXPECT_NO_THROW(verify_optimized(init.tet, d.tet)) << method;
+    const auto va = region_volumes(d.tet), vb = region_volumes(init.tet);
+    ASSERT_EQ(va.size(), 2u);
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(va[i].second, vb[i].second, 1e-12 * vb[i].second) << method;
+    EXPECT_EQ(d.tet.model.groups.size(), init.tet.model.groups.size());
+    // Quality rises on average for every method on this unoptimized input.
+    EXPECT_GT(r.after.q_avg, r.before.q_avg) << method;
+    EXPECT_GE(r.after.q_min, method == std::string("cvdt") ? -1.0 : r.before.q_min) << method;
+  }
+}
+
+TEST(Optimize3d, UnknownMethodAndWrongDimensionAreRefused) {
+  MeshData d = two_region_cube_sphere();
+  OptimizeOptions o;
+  o.method = "dl";  // a 2D method
+  EXPECT_THROW(optimize(d, o), std::invalid_argument);
+  o.method = "nonsense";
+  EXPECT_THROW(optimize(d, o), std::invalid_argument);
+  const auto m3 = methods_for_dim(3);
+  EXPECT_EQ(m3.front(), "cvdt+swap+smooth");
+  EXPECT_NE(std::find(m3.begin(), m3.end(), "combined"), m3.end());
+}
+
+}  // namespace
+}  // namespace cvtmesh
