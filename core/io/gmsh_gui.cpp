@@ -195,6 +195,7 @@ void gui_refresh() {
 }
 
 void gui_show_view(int tag, double vmin, double vmax, bool cut) {
+  cut = cut && gmsh::model::getDimension() == 3;  // a planar mesh is seen whole
   std::vector<int> tags;
   gmsh::view::getTags(tags);
   for (int t : tags) {
@@ -208,7 +209,7 @@ void gui_show_view(int tag, double vmin, double vmax, bool cut) {
     }
     gmsh::option::setNumber(v + "Clip", cut ? 1 : 0);
   }
-  if (cut && gmsh::model::getDimension() == 3) {
+  if (cut) {
     double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
     gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
     // Keep x <= centre: -x + centre >= 0.

@@ -150,6 +150,37 @@ class InProcessScripting(unittest.TestCase):
         self.assertTrue(issubclass(cvtmesh.InputError, ValueError))
 
 
+class PlanarModel(unittest.TestCase):
+    """A 2D model (the paper's washer): every surface is optimized in its plane."""
+
+    def setUp(self):
+        gmsh.initialize()
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(os.path.join(SOURCE_DIR, "geo", "washer.geo"))
+        gmsh.model.mesh.generate(2)
+
+    def tearDown(self):
+        gmsh.finalize()
+
+    def test_surfaces_are_optimized_in_place(self):
+        if not cvtmesh.methods(2):
+            self.skipTest("no 2D method in this build")
+        boundary = nodes(1)
+        before = nodes(2)
+        table = cvtmesh.optimize(max_iterations=10, quality_views=True)
+        self.assertEqual(table["dim"], 2)
+        self.assertEqual(table["method"], cvtmesh.methods(2)[0])
+        self.assertGreater(table["after"]["average_quality"],
+                           table["before"]["average_quality"])
+        self.assertEqual(nodes(1), boundary)  # nodes on the circles stay
+        after = nodes(2)
+        self.assertTrue(all(x[2] == 0 for x in after.values()))  # still in the plane z = 0
+        moved = sum(1 for t in after if t in before and t not in boundary and before[t] != after[t])
+        self.assertGreater(moved, 0)
+        _, _, data, _, _ = gmsh.view.getModelData(table["views"][0], 0)
+        self.assertEqual(len(data), table["after"]["number_of_elements"])
+
+
 def initial_quality(size_factor):
     """Average Q of Gmsh's own mesh of the model (what the examples start from)."""
     gmsh.option.setNumber("Mesh.MeshSizeFactor", size_factor)
