@@ -1,0 +1,229 @@
+#include "core/io/gmsh_gui.h"
+
+#include <gmsh.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+#include "core/io/gmsh_session.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+nlohmann::ordered_json to_json(const OnelabParam& p) {
+  nlohmann::ordered_json j;
+  j["type"] = p.is_string ? "string" : "number";
+  j["name"] = p.name;
+  if (!p.help.empty()) j["help"] = p.help;
+  if (p.never_changed) j["changedValue"] = 0;
+  j["visible"] = p.visible;
+  j["readOnly"] = p.read_only;
+  if (!p.attributes.empty()) {
+    nlohmann::ordered_json a = nlohmann::ordered_json::object();
+    for (const auto& [k, v] : p.attributes) a[k] = v;
+    j["attributes"] = a;
+  }
+  if (p.is_string) {
+    j["values"] = {p.text};
+    if (!p.labels.empty()) j["choices"] = p.labels;
+  } else {
+    j["values"] = {p.number};
+    if (p.max > p.min) {
+      j["min"] = p.min;
+      j["max"] = p.max;
+      j["step"] = p.step;
+    }
+    if (!p.choices.empty()) j["choices"] = p.choices;
+    if (!p.labels.empty()) {
+      nlohmann::ordered_json l = nlohmann::ordered_json::object();
+      for (std::size_t i = 0; i < p.labels.size() && i < p.choices.size(); ++i)
+        l[p.labels[i]] = p.choices[i];
+      j["valueLabels"] = l;
+    }
+  }
+  return j;
+}
+
+}  // namespace
+
+std::string onelab_json(const std::vector<OnelabParam>& params) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const auto& p : params) j.push_back(to_json(p));
+  return j.dump();
+}
+
+void LocalOnelab::set(const OnelabParam& p) {
+  gmsh_checked("cannot set ONELAB parameter '" + p.name + "'",
+               [&] { gmsh::onelab::set(onelab_json({p}), "json"); });
+}
+
+std::optional<double> LocalOnelab::number(const std::string& name) {
+  std::vector<double> v;
+  gmsh::onelab::getNumber(name, v);
+  if (v.empty()) return std::nullopt;
+  return v[0];
+}
+
+std::optional<std::string> LocalOnelab::string(const std::string& name) {
+  std::vector<std::string> v;
+  gmsh::onelab::getString(name, v);
+  if (v.empty()) return std::nullopt;
+  return v[0];
+}
+
+void LocalOnelab::info(const std::string& message) {
+  gmsh::logger::write(message, "info");
+}
+
+void LocalOnelab::error(const std::string& message) {
+  // With General.AbortOnError = 2 (the SDK's default) Gmsh throws the message back at us when no
+  // GUI is running: a report must not become an exception.
+  double abort = 0;
+  gmsh::option::getNumber("General.AbortOnError", abort);
+  gmsh::option::setNumber("General.AbortOnError", 0);
+  try {
+    gmsh::logger::write(message, "error");
+  } catch (...) {
+  }
+  gmsh::option::setNumber("General.AbortOnError", abort);
+}
+
+void LocalOnelab::progress(const std::string& message) {
+  if (gmsh::fltk::isAvailable())
+    gmsh::fltk::setStatusMessage(message, false);
+  else
+    gmsh::logger::write(message, "info");
+}
+
+void gui_initialize(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  gmsh_checked("cannot start Gmsh",
+               [&] { gmsh::initialize(static_cast<int>(args.size()), argv.data(), true); });
+  set_gmsh_initialized_by_caller(true);  // our sessions use this Gmsh, never re-initialize it
+}
+
+void gui_finalize() {
+  gmsh::finalize();
+}
+
+void gui_open(const std::string& path) {
+  // Gmsh would silently start a new, empty model for a missing file.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError("cannot open '" + path + "': no such file");
+  gmsh_checked("cannot open '" + path + "'", [&] { gmsh::open(path); });
+}
+
+int gui_model_dim() {
+  return gmsh::model::getDimension();
+}
+
+void gui_set_button(const std::string& label, const std::string& action) {
+  // Two values, [label, action], always (ONELAB updates values index by index).
+  nlohmann::ordered_json b;
+  b["type"] = "string";
+  b["name"] = "ONELAB/Button";
+  b["values"] = {label, action};
+  b["visible"] = false;
+  gmsh::onelab::set(nlohmann::ordered_json::array({b}).dump(), "json");
+  // ONELAB/Action is created invisible, or the first press shows it as a field in the tree.
+  std::vector<std::string> cur;
+  gmsh::onelab::getString("ONELAB/Action", cur);
+  if (cur.empty()) {
+    OnelabParam a;
+    a.name = "ONELAB/Action";
+    a.is_string = true;
+    a.visible = false;
+    gmsh::onelab::set(onelab_json({a}), "json");
+  }
+}
+
+std::string gui_take_action() {
+  std::vector<std::string> v;
+  gmsh::onelab::getString("ONELAB/Action", v);
+  if (v.empty() || v[0].empty()) return "";
+  gmsh::onelab::setString("ONELAB/Action", {""});
+  return v[0];
+}
+
+void gui_post_action(const std::string& action) {
+  gmsh::onelab::setString("ONELAB/Action", {action});
+  if (gmsh::fltk::isAvailable()) gmsh::fltk::awake("update");
+}
+
+void gui_start(int min_menu_width) {
+  gmsh_checked("cannot open the Gmsh window (is DISPLAY set?)", [&] {
+    double w = 0;
+    gmsh::option::getNumber("General.MenuWidth", w);
+    if (w < min_menu_width) gmsh::option::setNumber("General.MenuWidth", min_menu_width);
+    gmsh::fltk::initialize();
+    if (!gmsh::fltk::isAvailable()) throw InputError("no graphical user interface available");
+  });
+}
+
+bool gui_wait(double seconds) {
+  if (!gmsh::fltk::isAvailable()) return false;
+  gmsh::fltk::wait(seconds);
+  return gmsh::fltk::isAvailable() != 0;
+}
+
+void gui_awake() {
+  gmsh::fltk::awake("update");
+}
+
+GuiLock::GuiLock() {
+  gmsh::fltk::lock();
+}
+GuiLock::~GuiLock() {
+  gmsh::fltk::unlock();
+}
+
+void gui_refresh() {
+  if (!gmsh::fltk::isAvailable()) return;
+  // Gmsh caches the vertex arrays of the mesh display: changing a mesh display option rebuilds
+  // them (GMSH-NOTES: the view does not redraw after the nodes moved).
+  double n = 1;
+  gmsh::option::getNumber("Mesh.NumSubEdges", n);
+  gmsh::option::setNumber("Mesh.NumSubEdges", n + 1);
+  gmsh::option::setNumber("Mesh.NumSubEdges", n);
+  gmsh::fltk::update();
+  gmsh::graphics::draw();
+}
+
+void gui_show_view(int tag, double vmin, double vmax, bool cut) {
+  cut = cut && gmsh::model::getDimension() == 3;  // a planar mesh is seen whole
+  std::vector<int> tags;
+  gmsh::view::getTags(tags);
+  for (int t : tags) {
+    const std::string v = "View[" + std::to_string(gmsh::view::getIndex(t)) + "].";
+    gmsh::option::setNumber(v + "Visible", t == tag ? 1 : 0);
+    if (t != tag) continue;
+    if (vmax > vmin) {
+      gmsh::option::setNumber(v + "RangeType", 2);  // custom
+      gmsh::option::setNumber(v + "CustomMin", vmin);
+      gmsh::option::setNumber(v + "CustomMax", vmax);
+    }
+    gmsh::option::setNumber(v + "Clip", cut ? 1 : 0);
+  }
+  if (cut) {
+    double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+    gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+    // Keep x <= centre: -x + centre >= 0.
+    gmsh::option::setNumber("General.Clip0A", -1);
+    gmsh::option::setNumber("General.Clip0B", 0);
+    gmsh::option::setNumber("General.Clip0C", 0);
+    gmsh::option::setNumber("General.Clip0D", 0.5 * (x0 + x1));
+    gmsh::option::setNumber("General.ClipWholeElements", 1);
+    gmsh::option::setNumber("Mesh.Clip", 1);
+  }
+  if (gmsh::fltk::isAvailable()) {
+    gmsh::fltk::update();
+    gmsh::graphics::draw();
+  }
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,103 @@
+// ONELAB and FLTK helpers for the Gmsh front ends (plugin/): a parameter description the panel is
+// written in, the interface of a ONELAB parameter tree, the tree of the Gmsh GUI running in this
+// process (gmsh::onelab) and the calls that drive that GUI (gmsh::fltk). Every Gmsh SDK call of
+// the front ends is here or in gmsh_inprocess.h. (The tree of a *stock* Gmsh that launched us as
+// a ONELAB client is reached over its socket with the header-only client of gmsh-doc, not with the
+// SDK: see plugin/onelab_remote.h.)
+#pragma once
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cvtmesh {
+
+// One ONELAB parameter. The name is the path in the tree ("Group/Sub/0Label": '/' separates
+// levels; leading digits order the entries and are not displayed).
+struct OnelabParam {
+  std::string name;
+  bool is_string = false;
+  double number = 0;
+  std::string text;
+  // Numbers: allowed values, with one label each in `labels` (a drop-down), or {0, 1} without
+  // labels (a check box). Strings: `labels` are the choices.
+  std::vector<double> choices;
+  std::vector<std::string> labels;
+  double min = 0, max = 0, step = 0;  // numbers: range and step when max > min
+  bool read_only = false;
+  bool visible = true;
+  bool never_changed = false;  // setting it does not mark the model as changed (results)
+  std::string help;
+  std::vector<std::pair<std::string, std::string>> attributes;  // e.g. {"Highlight", "AliceBlue"}
+};
+
+// The parameter tree a front end talks to, and the places its messages go.
+class OnelabTree {
+ public:
+  virtual ~OnelabTree() = default;
+  // Creates the parameter or overwrites it (value and attributes).
+  virtual void set(const OnelabParam& p) = 0;
+  // The current value, if the parameter exists.
+  virtual std::optional<double> number(const std::string& name) = 0;
+  virtual std::optional<std::string> string(const std::string& name) = 0;
+  // Gmsh's message console (info, error) and status bar (progress).
+  virtual void info(const std::string& message) = 0;
+  virtual void error(const std::string& message) = 0;
+  virtual void progress(const std::string& message) = 0;
+};
+
+// The ONELAB database of the Gmsh of this process (the GUI opened by gui_start, or none).
+class LocalOnelab : public OnelabTree {
+ public:
+  void set(const OnelabParam& p) override;
+  std::optional<double> number(const std::string& name) override;
+  std::optional<std::string> string(const std::string& name) override;
+  void info(const std::string& message) override;
+  void error(const std::string& message) override;
+  void progress(const std::string& message) override;
+};
+
+// Gmsh's JSON for a list of parameters (what gmsh::onelab::set takes).
+std::string onelab_json(const std::vector<OnelabParam>& params);
+
+// ---- The Gmsh GUI in this process (cvtmesh-gui) ----------------------------------------------
+
+// gmsh::initialize with a command line (args[0] is the program name; Gmsh options such as
+// -setnumber may follow). Throws InputError if Gmsh rejects it.
+void gui_initialize(const std::vector<std::string>& args);
+void gui_finalize();
+// Opens a model or mesh file as the current model (gmsh::open). Throws InputError (also for a
+// missing file, which Gmsh itself would silently take as a new model).
+void gui_open(const std::string& path);
+// The dimension of the current model (its highest entity dimension), -1 if empty.
+int gui_model_dim();
+// Sets the big Run button of the ONELAB panel: pressing it sets ONELAB/Action to `action`.
+void gui_set_button(const std::string& label, const std::string& action);
+// The pending ONELAB action ("" if none), reset to "" so that it is handled once.
+std::string gui_take_action();
+// Posts an action as if a button had been pressed (wakes the event loop up).
+void gui_post_action(const std::string& action);
+// Opens the window, the menu tree at least min_menu_width pixels wide (ONELAB labels are clipped
+// otherwise). Throws InputError if there is no display.
+void gui_start(int min_menu_width = 0);
+// Processes events for at most `seconds` (< 0: until one arrives). False once the window is closed.
+bool gui_wait(double seconds = -1);
+// From another thread: ask the event loop to wake up; lock around GUI calls from that thread.
+void gui_awake();
+class GuiLock {
+ public:
+  GuiLock();
+  ~GuiLock();
+  GuiLock(const GuiLock&) = delete;
+  GuiLock& operator=(const GuiLock&) = delete;
+};
+// Redraws the model after its mesh was replaced (Gmsh does not notice node moves by itself) and
+// refreshes the ONELAB tree.
+void gui_refresh();
+// Shows the view `tag` alone (the other views hidden), coloured per element over [vmin, vmax]
+// (vmax <= vmin: the view's own range). With cut, a 3D model is clipped by the plane x = centre of
+// its bounding box, whole elements kept, so that the quality inside shows and not only on the
+// boundary (Tools > Clipping turns it off).
+void gui_show_view(int tag, double vmin = 0, double vmax = 0, bool cut = false);
+
+}  // namespace cvtmesh

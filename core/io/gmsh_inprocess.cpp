@@ -1,0 +1,162 @@
+#include "core/io/gmsh_inprocess.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "core/io/gmsh_model.h"
+#include "core/io/gmsh_session.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+namespace {
+
+// Highest dimension of the current model that has mesh elements, -1 if none.
+int meshed_dim() {
+  gmsh::vectorpair ents;
+  gmsh::model::getEntities(ents);
+  int d_max = -1;
+  for (const auto& [d, t] : ents) {
+    std::vector<int> types;
+    gmsh::model::mesh::getElementTypes(types, d, t);
+    if (!types.empty()) d_max = std::max(d_max, d);
+  }
+  return d_max;
+}
+
+std::string current_model_name() {
+  std::string name;
+  gmsh::model::getCurrent(name);
+  return name.empty() ? "the current Gmsh model" : "the current Gmsh model '" + name + "'";
+}
+
+// Removes the views named like ours (quality_view_names).
+void remove_quality_views();
+
+}  // namespace
+
+std::vector<std::string> quality_view_names(int dim) {
+  MeshData empty;
+  empty.dim = dim == 2 ? 2 : 3;
+  std::vector<std::string> names;
+  for (const auto& f : quality_fields(empty)) names.push_back(f.name);
+  return names;
+}
+
+MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
+  set_gmsh_initialized_by_caller(true);
+  GmshSession session;
+  std::string what;
+  int have = -1, model_dim = -1;
+  gmsh_checked("cannot inspect the current Gmsh model", [&] {
+    what = current_model_name();
+    have = meshed_dim();
+    model_dim = gmsh::model::getDimension();
+  });
+  if (have < 0) {
+    if (model_dim < 1)
+      throw InputError(what +
+                       " is empty: call gmsh.initialize() and open or build a model "
+                       "(gmsh.open(...)) first");
+    if (!options.generate)
+      throw InputError(what + " has no mesh: generate it first (gmsh.model.mesh.generate(" +
+                       std::to_string(model_dim) + ")) or pass generate=True");
+    gmsh_checked("cannot mesh " + what, [&] {
+      gmsh::model::mesh::generate(options.dim > 0 ? options.dim : model_dim);
+      have = meshed_dim();
+    });
+    if (have < 0) throw InputError("Gmsh could not mesh " + what);
+  }
+  return mesh_from_gmsh(options.dim, what);
+}
+
+GmshOptimizeResult gmsh_write_back(const MeshData& data, const OptimizeResult& result,
+                                   const GmshOptimizeOptions& options) {
+  set_gmsh_initialized_by_caller(true);
+  GmshSession session;
+  GmshOptimizeResult out;
+  out.result = result;
+  out.method = options.optimize.method;
+  out.dim = data.dim;
+  const GmshWritten written = replace_gmsh_mesh(data);
+  // Views of an earlier run refer to elements that no longer exist.
+  remove_quality_views();
+  if (options.quality_views)
+    out.views = add_element_views(quality_fields(data), written.element_tags);
+  return out;
+}
+
+namespace {
+
+void remove_quality_views() {
+  gmsh_checked("cannot remove the previous quality views", [&] {
+    std::vector<std::string> ours = quality_view_names(2);
+    for (const auto& n : quality_view_names(3)) ours.push_back(n);
+    std::vector<int> tags;
+    gmsh::view::getTags(tags);
+    for (int tag : tags) {
+      std::string name;
+      gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(tag)) + "].Name", name);
+      if (std::find(ours.begin(), ours.end(), name) != ours.end()) gmsh::view::remove(tag);
+    }
+  });
+}
+
+}  // namespace
+
+GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
+  const MeshData data = gmsh_read_current(options);
+  GmshSession session;
+  GmshQualityResult out;
+  out.stats =
+      data.dim == 3 ? quality_stats(data.tet, "current") : quality_stats(data.tri, "current");
+  if (options.quality_views) {
+    remove_quality_views();
+    out.views = add_element_views(quality_fields(data),
+                                  data.dim == 3 ? data.tet.tet_tags : data.tri.tri_tags);
+  }
+  return out;
+}
+
+GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
+  MeshData data = gmsh_read_current(options);
+  GmshOptimizeOptions o = options;
+  if (o.optimize.method.empty()) {
+    const auto methods = methods_for_dim(data.dim);
+    if (methods.empty())
+      throw InputError("no optimization method is available for " + std::to_string(data.dim) +
+                       "D meshes in this build");
+    o.optimize.method = methods.front();
+  }
+  const OptimizeResult r = optimize(data, o.optimize);
+  return gmsh_write_back(data, r, o);
+}
+
+QualityTable GmshOptimizeResult::table() const {
+  QualityTable t;
+  QualityStats before = result.before, after = result.after;
+  before.label = "Init";
+  after.label = method;
+  after.extra.push_back({"iterations", static_cast<double>(result.iterations)});
+  after.extra.push_back({"converged", result.converged ? 1.0 : 0.0});
+  after.extra.push_back({"seconds", result.seconds});
+  t.columns = {before, after};
+  return t;
+}
+
+std::string GmshOptimizeResult::to_json() const {
+  const auto cols = nlohmann::ordered_json::parse(table().to_json());
+  nlohmann::ordered_json j;
+  j["method"] = method;
+  j["dim"] = dim;
+  j["iterations"] = result.iterations;
+  j["converged"] = result.converged;
+  j["seconds"] = result.seconds;
+  j["views"] = views;
+  j["before"] = cols.at(0);
+  j["after"] = cols.at(1);
+  return j.dump(2) + "\n";
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,358 @@
+// cvtmesh-gui [options] [model.geo|model.msh|...] [-- gmsh options]
+// The Gmsh GUI with a "Mesh optimization (CVT)" group in its ONELAB tree. Run optimizes the model
+// loaded in the GUI (meshing it first if needed) in a worker thread, replaces its mesh, adds
+// quality views, and shows the results in the tree; progress goes to the status bar and errors to
+// the message console. Thin: parsing, the event loop and rendering; the work is in core/.
+#include <atomic>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/io/gmsh_gui.h"
+#include "core/io/gmsh_inprocess.h"
+#include "plugin/panel.h"
+
+namespace {
+
+using namespace cvtmesh;
+
+const char* const kUsage =
+    "usage: cvtmesh-gui [options] [MODEL] [-- GMSH-OPTIONS...]\n"
+    "Opens MODEL (.geo, .msh, or anything Gmsh opens) in the Gmsh GUI with a\n"
+    "'Mesh optimization (CVT)' group in the ONELAB tree; its Run button optimizes the mesh.\n"
+    "options:\n"
+    "  --method M            initial method (see the panel; e.g. cvdt+swap, combined)\n"
+    "  --max-iterations N    initial max iterations\n"
+    "  --tolerance T         initial tolerance\n"
+    "  --sizing S            initial sizing: mesh or uniform\n"
+    "  --no-quality-views    do not add quality views after a run\n"
+    "  --show-quality        show the quality of the model's mesh on start (meshing it if needed)\n"
+    "  --run-on-start        press Run once the window is up\n"
+    "  --result-json FILE    after each action, write its outcome to FILE (JSON: {\"action\":\n"
+    "                        \"optimize\"|\"quality\", \"result\"|\"error\": ...})\n"
+    "  --exit-after-run [S]  close the window S seconds (default 0) after the first run;\n"
+    "                        the exit status is 0 if the run succeeded, 1 if not\n"
+    "  -h, --help            this help\n"
+    "GMSH-OPTIONS after -- go to Gmsh (e.g. -- -setnumber h 0.1).\n";
+
+const std::string kRun = "cvtmesh-run";
+const std::string kStop = "cvtmesh-stop";
+const std::string kDone = "cvtmesh-done";
+const std::string kQuality = "cvtmesh-quality";
+
+struct Args {
+  std::string model;
+  plugin::PanelPreset preset;
+  bool show_quality = false;
+  bool run_on_start = false;
+  std::string result_json;
+  std::optional<double> exit_after_run;
+  std::vector<std::string> gmsh_args;
+};
+
+// Returns false (after printing why) on a bad command line.
+bool parse(int argc, char** argv, Args& a, bool& help) {
+  a.gmsh_args.push_back(argv[0]);
+  for (int i = 1; i < argc; ++i) {
+    const std::string s = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc) {
+        std::cerr << "cvtmesh-gui: " << s << " needs a value\n";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string v;
+    try {
+      if (s == "--") {
+        for (++i; i < argc; ++i) a.gmsh_args.push_back(argv[i]);
+      } else if (s == "-h" || s == "--help") {
+        help = true;
+      } else if (s == "--method") {
+        if (!value(a.preset.method)) return false;
+      } else if (s == "--max-iterations") {
+        if (!value(v)) return false;
+        a.preset.max_iterations = std::stoi(v);
+      } else if (s == "--tolerance") {
+        if (!value(v)) return false;
+        a.preset.tolerance = std::stod(v);
+      } else if (s == "--sizing") {
+        if (!value(a.preset.sizing)) return false;
+      } else if (s == "--no-quality-views") {
+        a.preset.quality_views = 0;
+      } else if (s == "--show-quality") {
+        a.show_quality = true;
+      } else if (s == "--run-on-start") {
+        a.run_on_start = true;
+      } else if (s == "--result-json") {
+        if (!value(a.result_json)) return false;
+      } else if (s == "--exit-after-run") {
+        a.exit_after_run = 0;
+        if (i + 1 < argc && argv[i + 1][0] != '-') {
+          char* end = nullptr;
+          const double t = std::strtod(argv[i + 1], &end);
+          if (end && *end == '\0') {
+            a.exit_after_run = t;
+            ++i;
+          }
+        }
+      } else if (!s.empty() && s[0] == '-') {
+        std::cerr << "cvtmesh-gui: unknown option " << s << " (Gmsh options go after --)\n";
+        return false;
+      } else if (a.model.empty()) {
+        a.model = s;
+      } else {
+        std::cerr << "cvtmesh-gui: one model at a time (got '" << a.model << "' and '" << s
+                  << "')\n";
+        return false;
+      }
+    } catch (const std::exception&) {
+      std::cerr << "cvtmesh-gui: bad value '" << v << "' for " << s << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The optimization running in its worker thread, and what it leaves behind.
+struct Job {
+  std::thread thread;
+  std::atomic<bool> cancel{false};
+  GmshOptimizeOptions options;
+  MeshData data;
+  OptimizeResult result;
+  std::string error;  // empty: success
+  bool running = false;
+};
+
+struct Cancelled {};
+
+class App {
+ public:
+  explicit App(const Args& args) : args_(args) {}
+
+  int run() {
+    define(args_.preset);
+    gui_set_button("Run", kRun);
+    gui_start(300);
+    // Start-up actions, one at a time (ONELAB/Action holds a single action).
+    if (args_.show_quality) pending_.push_back(kQuality);
+    if (args_.run_on_start) pending_.push_back(kRun);
+    while (gui_wait(0.25)) {
+      if (exit_at_ && elapsed() >= *exit_at_) break;
+      std::string action = gui_take_action();
+      if (action.empty() && !pending_.empty() && !job_.running) {
+        action = pending_.front();
+        pending_.erase(pending_.begin());
+      }
+      if (action == kRun || action == kDone) action_ = "optimize";
+      if (action == kQuality) action_ = "quality";
+      try {
+        if (action == kRun)
+          start();
+        else if (action == kStop)
+          job_.cancel = true;
+        else if (action == kDone)
+          finish();
+        else if (action == kQuality)
+          show_quality();
+        else if (action == "reset")
+          define({});
+        else if (!job_.running && gui_model_dim() != dim_ && gui_model_dim() > 0)
+          define({});
+      } catch (const std::exception& e) {
+        report_error(std::string("cvtmesh: ") + e.what());
+      } catch (...) {
+        report_error("cvtmesh: unexpected error");
+      }
+    }
+    if (job_.thread.joinable()) {
+      job_.cancel = true;
+      job_.thread.join();
+    }
+    return exit_status_;
+  }
+
+ private:
+  void define(const plugin::PanelPreset& preset) {
+    dim_ = gui_model_dim();
+    plugin::define_panel(tree_, dim_ == 2 ? 2 : 3, preset);
+    plugin::define_quality_button(tree_, kQuality);
+    gui_refresh();
+  }
+
+  void start() {
+    if (job_.running) return;
+    job_.options = plugin::read_panel(tree_);
+    job_.options.generate = true;
+    tree_.progress("cvtmesh: reading the mesh...");
+    job_.data = gmsh_read_current(job_.options);  // meshes the model first if it has no mesh
+    gui_refresh();
+    job_.cancel = false;
+    job_.error.clear();
+    job_.running = true;
+    const int max_it = job_.options.optimize.max_iterations;
+    job_.options.optimize.progress = [this, max_it](const OptimizeProgress& p) {
+      if (job_.cancel) throw Cancelled{};
+      {
+        GuiLock lock;
+        tree_.progress(plugin::progress_text(p, max_it));
+      }
+      gui_awake();
+    };
+    tree_.info("cvtmesh: optimizing with " + job_.options.optimize.method + "...");
+    write_json("optimize", "status", "running");
+    gui_set_button("Stop", kStop);
+    gui_refresh();
+    job_.thread = std::thread([this] {
+      try {
+        job_.result = optimize(job_.data, job_.options.optimize);
+      } catch (const Cancelled&) {
+        job_.error = "cvtmesh: stopped; the mesh was left unchanged";
+      } catch (const std::exception& e) {
+        job_.error = std::string("cvtmesh: ") + e.what();
+      } catch (...) {
+        job_.error = "cvtmesh: the optimization failed";
+      }
+      GuiLock lock;
+      gui_post_action(kDone);
+    });
+  }
+
+  void finish() {
+    if (!job_.running) return;
+    job_.thread.join();
+    job_.running = false;
+    gui_set_button("Run", kRun);
+    if (!job_.error.empty()) {
+      report_error(job_.error);
+      return;
+    }
+    tree_.progress("cvtmesh: writing the optimized mesh back...");
+    const GmshOptimizeResult r = gmsh_write_back(job_.data, job_.result, job_.options);
+    plugin::show_results(tree_, r);
+    if (!r.views.empty()) gui_show_view(r.views.front(), 0, 1, true);  // Q over [0, 1], cut
+    gui_refresh();
+    tree_.info(plugin::summary(r));
+    tree_.progress(plugin::summary(r));
+    write_json("optimize", "result", nlohmann::ordered_json::parse(r.to_json()));
+    ran(0);
+  }
+
+  void show_quality() {
+    GmshOptimizeOptions o = plugin::read_panel(tree_);
+    o.generate = true;
+    o.quality_views = true;
+    const GmshQualityResult q = gmsh_quality(o);
+    if (!q.views.empty()) gui_show_view(q.views.front(), 0, 1, true);
+    gui_refresh();
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "cvtmesh: current mesh: %ld elements, Q avg %.4f, Q min %.4f, bad %.2f%%",
+                  q.stats.nb_elements, q.stats.q_avg, q.stats.q_min, q.stats.bad_pct);
+    tree_.info(buf);
+    tree_.progress(buf);
+    QualityTable t;
+    t.columns = {q.stats};
+    auto result = nlohmann::ordered_json::parse(t.to_json()).at(0);
+    result["views"] = q.views;
+    write_json("quality", "result", result);
+  }
+
+  void report_error(const std::string& message) {
+    tree_.error(message);
+    write_json(action_, "error", message);
+    gui_refresh();
+    ran(1);
+  }
+
+  void ran(int status) {
+    if (!args_.exit_after_run || exit_at_) return;
+    exit_status_ = status;
+    exit_at_ = elapsed() + *args_.exit_after_run;
+  }
+
+  void write_json(const std::string& action, const std::string& key,
+                  const nlohmann::ordered_json& value) {
+    if (args_.result_json.empty()) return;
+    nlohmann::ordered_json j;
+    j["action"] = action;
+    j[key] = value;
+    // Written whole under a temporary name, then renamed: a watcher never sees half a file.
+    const std::string tmp = args_.result_json + ".tmp";
+    {
+      std::ofstream f(tmp);
+      f << j.dump(2) << "\n";
+      if (!f) {
+        tree_.error("cvtmesh: cannot write " + tmp);
+        return;
+      }
+    }
+    if (std::rename(tmp.c_str(), args_.result_json.c_str()) != 0)
+      tree_.error("cvtmesh: cannot write " + args_.result_json);
+  }
+
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+
+  const Args& args_;
+  LocalOnelab tree_;
+  Job job_;
+  int dim_ = -1;
+  std::vector<std::string> pending_;
+  std::string action_ = "optimize";  // what an error is reported against
+  int exit_status_ = 0;
+  std::optional<double> exit_at_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args args;
+  bool help = false;
+  if (!parse(argc, argv, args, help)) {
+    std::cerr << kUsage;
+    return 2;
+  }
+  if (help) {
+    std::cout << kUsage;
+    return 0;
+  }
+  try {
+    gui_initialize(args.gmsh_args);
+  } catch (const std::exception& e) {
+    std::cerr << "cvtmesh-gui: " << e.what() << "\n";
+    return 2;
+  }
+  int status = 0;
+  try {
+    // An unreadable model is reported in the message console; the GUI still opens.
+    if (!args.model.empty()) {
+      try {
+        gui_open(args.model);
+      } catch (const std::exception& e) {
+        LocalOnelab().error(std::string("cvtmesh: ") + e.what());
+      }
+    }
+    App app(args);
+    status = app.run();
+  } catch (const std::exception& e) {
+    std::cerr << "cvtmesh-gui: " << e.what() << "\n";
+    status = 2;
+  } catch (...) {
+    std::cerr << "cvtmesh-gui: unexpected error\n";
+    status = 2;
+  }
+  gui_finalize();
+  return status;
+}

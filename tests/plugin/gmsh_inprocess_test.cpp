@@ -1,0 +1,223 @@
+// gmsh_optimize / gmsh_quality on the current Gmsh model of this process (in-process scripting):
+// the model keeps its entities and physical groups, boundary nodes stay put, the mesh Gmsh holds
+// afterwards is the optimized one (its quality is what the result reports), views are replaced
+// and not piled up, and errors are typed and leave the model alone.
+#include <gmsh.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "core/io/gmsh_inprocess.h"
+#include "core/io/gmsh_model.h"
+#include "core/io/gmsh_session.h"
+#include "core/pipeline/optimize.h"
+#include "core/quality/quality_stats.h"
+#include "core/util/error.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+using Group = std::tuple<int, int, std::string, std::vector<int>>;  // dim, tag, name, entities
+
+std::vector<Group> physical_groups() {
+  std::vector<Group> out;
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  for (const auto& [d, t] : groups) {
+    std::string name;
+    std::vector<int> ents;
+    gmsh::model::getPhysicalName(d, t, name);
+    gmsh::model::getEntitiesForPhysicalGroup(d, t, ents);
+    out.emplace_back(d, t, name, ents);
+  }
+  return out;
+}
+
+gmsh::vectorpair entities() {
+  gmsh::vectorpair e;
+  gmsh::model::getEntities(e);
+  return e;
+}
+
+// Node tag -> coordinates, for the nodes classified on entities of dimension <= max_dim.
+std::map<std::size_t, std::vector<double>> nodes(int max_dim) {
+  std::map<std::size_t, std::vector<double>> out;
+  for (const auto& [d, t] : entities()) {
+    if (d > max_dim) continue;
+    std::vector<std::size_t> tags;
+    std::vector<double> xyz, uv;
+    gmsh::model::mesh::getNodes(tags, xyz, uv, d, t, false, false);
+    for (std::size_t i = 0; i < tags.size(); ++i)
+      out[tags[i]] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  }
+  return out;
+}
+
+std::size_t nb_views() {
+  std::vector<int> tags;
+  gmsh::view::getTags(tags);
+  return tags.size();
+}
+
+// A Gmsh session owned by the test (as a script's would be), a coarse cube_sphere meshed in 3D.
+class GmshInProcess : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    set_gmsh_initialized_by_caller(true);
+  }
+  void TearDown() override {
+    gmsh::finalize();
+    set_gmsh_initialized_by_caller(false);
+  }
+  static void open_cube_sphere(bool two_regions = false, bool mesh = true) {
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", 2.5);
+    gmsh::option::setNumber("Mesh.RandomSeed", 1);
+    // DefineConstant takes a value already in the ONELAB database.
+    gmsh::onelab::setNumber("cvtmesh/Geometry/ball as a region", {two_regions ? 1.0 : 0.0});
+    gmsh::open(testing::geo_path("cube_sphere.geo"));
+    if (mesh) gmsh::model::mesh::generate(3);
+  }
+};
+
+TEST_F(GmshInProcess, EveryMethodOptimizesTheCurrentModelInPlace) {
+  const auto methods = methods_for_dim(3);
+  ASSERT_FALSE(methods.empty());
+  for (const auto& method : methods) {
+    SCOPED_TRACE(method);
+    gmsh::clear();
+    open_cube_sphere(true);  // two volumes sharing the ball's surface
+    const auto groups = physical_groups();
+    const auto ents = entities();
+    const auto boundary = nodes(2);
+    const auto all_before = nodes(3);
+    ASSERT_GE(groups.size(), 3u);
+
+    GmshOptimizeOptions o;
+    o.optimize.method = method;
+    o.optimize.max_iterations = 4;
+    o.quality_views = true;
+    const GmshOptimizeResult r = gmsh_optimize(o);
+
+    EXPECT_EQ(r.method, method);
+    EXPECT_EQ(r.dim, 3);
+    EXPECT_EQ(physical_groups(), groups);
+    EXPECT_EQ(entities(), ents);
+    // Boundary and interface nodes keep their tags, classification and coordinates.
+    EXPECT_EQ(nodes(2), boundary);
+    // Quality rose (all methods are meant to improve a Gmsh mesh on average).
+    EXPECT_GT(r.result.after.q_avg, r.result.before.q_avg);
+    // The model Gmsh holds now is the optimized mesh: re-read, it has the reported quality.
+    const MeshData now = mesh_from_gmsh(3);
+    const QualityStats s = quality_stats(now.tet, "now");
+    EXPECT_EQ(s.nb_elements, r.result.after.nb_elements);
+    EXPECT_NEAR(s.q_avg, r.result.after.q_avg, 1e-12);
+    EXPECT_NEAR(s.q_min, r.result.after.q_min, 1e-12);
+    if (method != "swap") {  // swaps only change connectivity
+      const auto all_after = nodes(3);
+      int moved = 0;
+      for (const auto& [tag, x] : all_after) {
+        auto it = all_before.find(tag);
+        if (it != all_before.end() && it->second != x) ++moved;
+      }
+      EXPECT_GT(moved, 0);
+    }
+    // The views hold one value per tet, the first being Q.
+    ASSERT_EQ(r.views.size(), 3u);
+    std::string type;
+    std::vector<std::size_t> tags;
+    std::vector<std::vector<double>> data;
+    double time = 0;
+    int nc = 0;
+    gmsh::view::getModelData(r.views[0], 0, type, tags, data, time, nc);
+    EXPECT_EQ(type, "ElementData");
+    ASSERT_EQ(static_cast<long>(data.size()), r.result.after.nb_elements);
+    double q_min = 2;
+    for (const auto& v : data) q_min = std::min(q_min, v.at(0));
+    EXPECT_NEAR(q_min, r.result.after.q_min, 1e-12);
+  }
+}
+
+TEST_F(GmshInProcess, RunningAgainReplacesTheQualityViews) {
+  const auto methods = methods_for_dim(3);
+  ASSERT_FALSE(methods.empty());
+  open_cube_sphere();
+  GmshOptimizeOptions o;
+  o.optimize.method = methods.front();
+  o.optimize.max_iterations = 2;
+  o.quality_views = true;
+  gmsh_optimize(o);
+  ASSERT_EQ(nb_views(), 3u);
+  const GmshQualityResult q = gmsh_quality(o);
+  EXPECT_EQ(nb_views(), 3u);  // stale views of the first run removed
+  EXPECT_EQ(q.views.size(), 3u);
+  const GmshOptimizeResult r = gmsh_optimize(o);
+  EXPECT_EQ(nb_views(), 3u);
+  // The second run starts from the first run's result, measured by gmsh_quality.
+  EXPECT_NEAR(r.result.before.q_avg, q.stats.q_avg, 1e-12);
+  // Without views, the old ones (on elements that changed) go too.
+  o.quality_views = false;
+  gmsh_optimize(o);
+  EXPECT_EQ(nb_views(), 0u);
+}
+
+TEST_F(GmshInProcess, EmptyMethodPicksTheFirstForTheDimension) {
+  open_cube_sphere();
+  GmshOptimizeOptions o;
+  o.optimize.method = "";
+  o.optimize.max_iterations = 1;
+  EXPECT_EQ(gmsh_optimize(o).method, methods_for_dim(3).front());
+}
+
+TEST_F(GmshInProcess, ModelWithoutMeshIsAnErrorUnlessGenerateIsAsked) {
+  open_cube_sphere(false, /*mesh=*/false);
+  GmshOptimizeOptions o;
+  o.optimize.method = methods_for_dim(3).front();
+  o.optimize.max_iterations = 1;
+  try {
+    gmsh_optimize(o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no mesh"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(nodes(3).empty());
+  o.generate = true;
+  const GmshOptimizeResult r = gmsh_optimize(o);
+  EXPECT_GT(r.result.after.nb_elements, 0);
+  EXPECT_FALSE(nodes(3).empty());
+}
+
+TEST_F(GmshInProcess, EmptyModelIsAnError) {
+  GmshOptimizeOptions o;
+  o.generate = true;
+  EXPECT_THROW(gmsh_optimize(o), InputError);
+}
+
+TEST_F(GmshInProcess, UnknownMethodLeavesTheModelUnchanged) {
+  open_cube_sphere();
+  const auto before = nodes(3);
+  GmshOptimizeOptions o;
+  o.optimize.method = "no-such-method";
+  EXPECT_THROW(gmsh_optimize(o), std::invalid_argument);
+  EXPECT_EQ(nodes(3), before);
+}
+
+TEST_F(GmshInProcess, AbortFromProgressLeavesTheModelUnchanged) {
+  open_cube_sphere();
+  const auto before = nodes(3);
+  GmshOptimizeOptions o;
+  o.optimize.method = methods_for_dim(3).front();
+  o.optimize.progress = [](const OptimizeProgress&) { throw std::runtime_error("stop"); };
+  EXPECT_THROW(gmsh_optimize(o), std::runtime_error);
+  EXPECT_EQ(nodes(3), before);
+}
+
+}  // namespace
+}  // namespace cvtmesh

@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""cvtmesh-gui under Xvfb (run me with xvfb-run -a): the real Gmsh GUI with the panel.
+
+- Show quality (--show-quality), then a synthetic click on the Run button (xdotool): the quality
+  shown before is the "before" of the run, the run raises it, screenshots before/after are kept
+  as artifacts.
+- Run triggered programmatically (--run-on-start, the same ONELAB action a press sets).
+- Stop (the Run button while running) ends a long run; the mesh is left alone.
+- A model that cannot be read: the error reaches the console and the result file, no crash.
+
+Environment: CVTMESH_GUI (the executable), CVTMESH_SOURCE_DIR, CVTMESH_ARTIFACTS (screenshots).
+"""
+import os
+import subprocess
+import tempfile
+import time
+import unittest
+
+import xvfb_util as xu
+
+GUI = os.environ.get("CVTMESH_GUI", "cvtmesh-gui")
+SOURCE_DIR = os.environ.get("CVTMESH_SOURCE_DIR",
+                            os.path.join(os.path.dirname(__file__), "..", ".."))
+GEO = os.path.join(SOURCE_DIR, "geo", "cube_sphere.geo")
+MENU_WIDTH = 300  # cvtmesh-gui widens Gmsh's menu tree to this
+# A 3/4 view of the cube, and a window that fits the 1280x900 Xvfb screen.
+VIEW_OPTIONS = """General.Trackball = 0;
+General.RotationX = -65; General.RotationY = 0; General.RotationZ = -115;
+General.GraphicsWidth = 820; General.GraphicsHeight = 640;
+"""
+
+
+class Gui(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.env = dict(os.environ, HOME=self.tmp.name)  # no user Gmsh options, no session file
+        self.view = os.path.join(self.tmp.name, "view.opt")
+        with open(self.view, "w") as f:
+            f.write(VIEW_OPTIONS)
+        self.result = os.path.join(self.tmp.name, "result.json")
+        self.proc = None
+
+    def tearDown(self):
+        if self.proc and self.proc.poll() is None:
+            self.proc.kill()
+            self.proc.wait()
+        if self.proc:
+            self.log.close()
+        self.tmp.cleanup()
+
+    def start(self, *args, model=GEO):
+        cmd = [GUI, model, "--result-json", self.result, *args, "--", "-clscale", "2.5",
+               "-option", self.view]
+        # Output to a file: a pipe nobody reads while the GUI runs would fill up and block it.
+        self.log = open(os.path.join(self.tmp.name, "gui.log"), "w")
+        self.proc = subprocess.Popen(cmd, env=self.env, cwd=self.tmp.name, stdout=self.log,
+                                     stderr=subprocess.STDOUT)
+
+    def result_of(self, action, timeout=120, keys=("result", "error")):
+        def done():
+            r = xu.read_json(self.result)
+            return r if r and r.get("action") == action and any(k in r for k in keys) else None
+        return xu.wait_for(done, timeout, f"the '{action}' {'/'.join(keys)} in {self.result}")
+
+    def finish(self):
+        self.proc.wait(timeout=60)
+        self.log.close()
+        with open(self.log.name) as f:
+            return self.proc.returncode, f.read()
+
+    def test_show_quality_then_click_run(self):
+        art = xu.artifacts_dir()
+        before_png = os.path.join(art, "gui_before.png")
+        after_png = os.path.join(art, "gui_after.png")
+        self.start("--show-quality", "--max-iterations", "8", "--exit-after-run", "2")
+        wid = xu.window("Gmsh")
+        quality = self.result_of("quality")["result"]
+        time.sleep(1.0)  # let the window repaint
+        w, h, colours = xu.screenshot(before_png)
+        # A synthetic click on the Run button, at the bottom right of the menu tree.
+        _, height = xu.window_size(wid)
+        xu.click(wid, MENU_WIDTH - 80, height - 39)
+        self.result_of("optimize", timeout=30, keys=("status", "result", "error"))  # started
+        run = self.result_of("optimize")
+        time.sleep(1.0)
+        xu.screenshot(after_png)
+        status, out = self.finish()
+        self.assertEqual(status, 0, out)
+
+        self.assertNotIn("error", run, run)
+        r = run["result"]
+        self.assertEqual(r["iterations"], 8)
+        # Show quality measured the mesh the run started from; the run raised its quality.
+        self.assertEqual(r["before"]["number_of_elements"], quality["number_of_elements"])
+        self.assertAlmostEqual(r["before"]["average_quality"], quality["average_quality"],
+                               places=12)
+        self.assertGreater(r["after"]["average_quality"], r["before"]["average_quality"])
+        self.assertEqual(len(r["views"]), 3)
+        self.assertIn(f"cvtmesh: {r['method']} on", out)  # summary in the message console
+        # The screenshots show a drawn window (many colours: the view's colour map) that changed.
+        self.assertEqual((w, h), (1280, 900))
+        self.assertGreater(colours, 200)
+        self.assertGreater(xu.pixels_differing(before_png, after_png), 5000)
+
+    def test_run_on_start(self):
+        self.start("--run-on-start", "--max-iterations", "8", "--exit-after-run", "0")
+        run = self.result_of("optimize")
+        status, out = self.finish()
+        self.assertEqual(status, 0, out)
+        self.assertEqual(run["result"]["iterations"], 8)
+        self.assertGreater(run["result"]["after"]["average_quality"],
+                           run["result"]["before"]["average_quality"])
+
+    def test_stop_button_ends_a_long_run(self):
+        # Tolerance 0 never converges: 1000 iterations would take minutes.
+        self.start("--method", "cvdt", "--tolerance", "0", "--max-iterations", "1000",
+                   "--run-on-start", "--exit-after-run", "0")
+        wid = xu.window("Gmsh")
+        self.result_of("optimize", timeout=60, keys=("status",))  # running
+        time.sleep(1.0)
+        _, height = xu.window_size(wid)
+        xu.click(wid, MENU_WIDTH - 80, height - 39)  # the Run button reads Stop while running
+        run = self.result_of("optimize", timeout=60)
+        status, out = self.finish()
+        self.assertEqual(status, 1, out)
+        self.assertIn("stopped; the mesh was left unchanged", run["error"])
+
+    def test_unreadable_model_is_reported_not_crashed(self):
+        missing = os.path.join(self.tmp.name, "missing.geo")
+        self.start("--run-on-start", "--exit-after-run", "0", model=missing)
+        run = self.result_of("optimize")
+        status, out = self.finish()
+        self.assertEqual(status, 1, out)  # an error, reported, not a signal
+        self.assertIn("empty", run["error"])
+        self.assertIn("missing.geo': no such file", out)  # the open error reached the console
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
