@@ -35,7 +35,9 @@ GmshSession::GmshSession() {
     terminal_ = 0;
   }
   gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::logger::start();
+  // The logger keeps the messages for getLastError; start it once per initialization (starting
+  // it twice, or in the caller's Gmsh, makes Gmsh warn "Logger already started").
+  if (owns_ && g_depth == 1) gmsh::logger::start();
 }
 
 GmshSession::~GmshSession() {
