@@ -93,7 +93,9 @@ void register_compare(CLI::App& app) {
          if (!co->save_dir.empty()) {
            std::error_code ec;
            std::filesystem::create_directories(co->save_dir, ec);
-           if (ec) throw OutputError("cannot create the directory '" + co->save_dir + "': " + ec.message());
+           if (ec)
+             throw OutputError("cannot create the directory '" + co->save_dir +
+                               "': " + ec.message());
          }
          const auto t0 = std::chrono::steady_clock::now();
          const MeshData init = read_mesh(in->path, init_read_options(*in));

@@ -72,8 +72,9 @@ namespace {
 
 // The cell of v clipped by the bisectors of the generators `nbrs`; `hit` receives the tets where
 // the cell has a piece of positive volume.
-CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star, const std::vector<char>& constrained, int v,
-                             double eps, CellWorkspace& ws, const std::vector<double>* rho,
+CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star,
+                             const std::vector<char>& constrained, int v, double eps,
+                             CellWorkspace& ws, const std::vector<double>* rho,
                              const std::vector<int>& nbrs, std::vector<int>& hit) {
   CellIntegrals total;
   hit.clear();
@@ -237,13 +238,16 @@ bool dual_voronoi_cell(const TetMesh& m, const VertexStar& star,
     const LocateResult r = locate_point(m, &cc[3 * t], t, &constrained, 16);
     if (r.status != LocateStatus::kInside) return false;
     // The dual decomposition is exact only where the mesh is Delaunay: every neighbour's opposite
-    // vertex must be outside the circumsphere (a constrained mesh can break this near the boundary).
+    // vertex must be outside the circumsphere (a constrained mesh can break this near the
+    // boundary).
     const int* tv = &m.tets[4 * t];
     for (int f = 0; f < 4; ++f) {
       const int o = m.adj[4 * t + f];
       if (o < 0) continue;
       const int opp = m.tets[4 * (o / 4) + o % 4];
-      if (insphere(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), m.point(opp)) > 0) return false;
+      if (insphere(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), m.point(opp)) >
+          0)
+        return false;
     }
   }
   const Vec3 z = vec3(m.point(v));

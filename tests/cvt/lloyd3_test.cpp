@@ -44,8 +44,10 @@ TEST(Lloyd3, ClippedCellCentroidMatchesMonteCarloNearestGenerator) {
   // are cut by the cube. The mesh is the Delaunay tetrahedralization, so the restricted cell of a
   // generator is {x in cube : nearest generator is it}. Compare with sampling.
   std::vector<double> pts;
-  for (int i = 0; i < 8; ++i) pts.insert(pts.end(), {double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
-  const double interior[][3] = {{0.3, 0.4, 0.12}, {0.7, 0.6, 0.85}, {0.5, 0.45, 0.5}, {0.15, 0.8, 0.6}, {0.85, 0.2, 0.4}};
+  for (int i = 0; i < 8; ++i)
+    pts.insert(pts.end(), {double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  const double interior[][3] = {
+      {0.3, 0.4, 0.12}, {0.7, 0.6, 0.85}, {0.5, 0.45, 0.5}, {0.15, 0.8, 0.6}, {0.85, 0.2, 0.4}};
   for (const auto& q : interior) pts.insert(pts.end(), q, q + 3);
   TetMesh m = testing::delaunay_of_points(pts);
   ASSERT_TRUE(check_mesh(m).ok);
@@ -71,7 +73,8 @@ TEST(Lloyd3, ClippedCellCentroidMatchesMonteCarloNearestGenerator) {
   for (int v = 8; v < n; ++v) {
     ASSERT_GT(count[v], 1000);
     EXPECT_NEAR(c.mass[v], double(count[v]) / samples, 0.01);
-    for (int d = 0; d < 3; ++d) EXPECT_NEAR(c.centroid[3 * v + d], sum[3 * v + d] / count[v], 0.01) << v << " " << d;
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(c.centroid[3 * v + d], sum[3 * v + d] / count[v], 0.01) << v << " " << d;
   }
 }
 
@@ -107,7 +110,8 @@ TEST(Lloyd3, EnergyNeverIncreasesAndInvariantsHoldOnCubeSphere) {
       // check_mesh around every iteration is done inside; here the mesh is valid again.
     });
     ASSERT_EQ(energy.size(), 8u);
-    for (std::size_t i = 1; i < energy.size(); ++i) EXPECT_LE(energy[i], energy[i - 1] * (1 + 1e-12)) << omega << " " << i;
+    for (std::size_t i = 1; i < energy.size(); ++i)
+      EXPECT_LE(energy[i], energy[i - 1] * (1 + 1e-12)) << omega << " " << i;
     EXPECT_LT(energy.back(), energy.front());
     const MeshCheck mc = check_mesh(d.tet);
     EXPECT_TRUE(mc.ok);
@@ -118,7 +122,8 @@ TEST(Lloyd3, EnergyNeverIncreasesAndInvariantsHoldOnCubeSphere) {
         for (int k = 0; k < 3; ++k) EXPECT_EQ(d.tet.point(v)[k], input.point(v)[k]);
     const auto vb = region_volumes(input), va = region_volumes(d.tet);
     ASSERT_EQ(vb.size(), va.size());
-    for (std::size_t i = 0; i < vb.size(); ++i) EXPECT_NEAR(va[i].second, vb[i].second, 1e-12 * vb[i].second);
+    for (std::size_t i = 0; i < vb.size(); ++i)
+      EXPECT_NEAR(va[i].second, vb[i].second, 1e-12 * vb[i].second);
     EXPECT_NO_THROW(verify_optimized(input, d.tet));
   }
 }
@@ -138,11 +143,14 @@ TEST(Lloyd3, MeshSizingKeepsGradingAndImprovesQuality) {
     for (const auto& e : kTetEdge) {
       const double* a = d.tet.point(d.tet.tets[4 * t + e[0]]);
       const double* b = d.tet.point(d.tet.tets[4 * t + e[1]]);
-      const double mid[3] = {(a[0] + b[0]) / 2 - 0.5, (a[1] + b[1]) / 2 - 0.5, (a[2] + b[2]) / 2 - 0.5};
+      const double mid[3] = {(a[0] + b[0]) / 2 - 0.5, (a[1] + b[1]) / 2 - 0.5,
+                             (a[2] + b[2]) / 2 - 0.5};
       const double r = std::sqrt(mid[0] * mid[0] + mid[1] * mid[1] + mid[2] * mid[2]);
       const double l = std::sqrt(dist2(a, b));
-      if (r < 0.32) near += l, ++nn;
-      else if (r > 0.6) far += l, ++nf;
+      if (r < 0.32)
+        near += l, ++nn;
+      else if (r > 0.6)
+        far += l, ++nf;
     }
   ASSERT_GT(nn, 0);
   ASSERT_GT(nf, 0);
@@ -177,7 +185,8 @@ TEST(Lloyd3, AndersonAcceleratedAcceptedEnergiesNeverIncrease) {
     }
   });
   ASSERT_GE(accepted.size(), 5u);
-  for (std::size_t i = 1; i < accepted.size(); ++i) EXPECT_LE(accepted[i], accepted[i - 1] * (1 + 1e-12));
+  for (std::size_t i = 1; i < accepted.size(); ++i)
+    EXPECT_LE(accepted[i], accepted[i - 1] * (1 + 1e-12));
   EXPECT_TRUE(check_mesh(d.tet).ok);
 }
 
