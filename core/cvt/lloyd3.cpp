@@ -195,7 +195,7 @@ class Lloyd3Problem {
     for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
       double x[3];
       for (int d = 0; d < 3; ++d) x[d] = z[d] + t * (goal[d] - z[d]);
-      const LocateResult r = locate_point(m_, x, star.tet[star.offset[v]], &constrained, 100000);
+      const LocateResult r = locate_point(m_, x, star.tets[star.offset[v]], &constrained, 100000);
       if (r.status == LocateStatus::kInside) {
         for (int d = 0; d < 3; ++d) out[d] = x[d];
         return h == 0;

@@ -8,6 +8,19 @@
 #include "core/mesh/locate_point.h"
 
 namespace cvtmesh {
+
+std::vector<EdgeKey> unique_edges(const TetMesh& m) {
+  std::vector<EdgeKey> edges;
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* v = &m.tets[4 * t];
+    if (v[0] < 0) continue;
+    for (const auto& e : kTetEdge) edges.push_back(edge_key(v[e[0]], v[e[1]]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
 namespace {
 
 class Uniform final : public SizingField3 {
@@ -73,14 +86,7 @@ class Background final : public SizingField3 {
       if (!cnt[i]) h_[i] = fallback;
     // The raw local edge lengths of an unoptimized mesh are noisy, and rho = 1/H^5 amplifies the
     // noise: smooth H by a few Jacobi passes over the edges, keeping the grading.
-    std::vector<EdgeKey> edges;
-    for (int t = 0; t < m.nb_tets(); ++t) {
-      const int* v = &m.tets[4 * t];
-      if (v[0] < 0) continue;
-      for (const auto& e : kTetEdge) edges.push_back(edge_key(v[e[0]], v[e[1]]));
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    const std::vector<EdgeKey> edges = unique_edges(m);
     for (int pass = 0; pass < 4; ++pass) {
       std::vector<double> acc(h_), n(nv, 1.0);
       for (const auto& e : edges) {
@@ -167,14 +173,7 @@ std::unique_ptr<SizingField3> make_mesh_sizing3(const TetMesh& background) {
 }
 
 double mean_edge_length(const TetMesh& m) {
-  std::vector<EdgeKey> edges;
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] < 0) continue;
-    for (const auto& e : kTetEdge) edges.push_back(edge_key(v[e[0]], v[e[1]]));
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const std::vector<EdgeKey> edges = unique_edges(m);
   double s = 0;
   for (const auto& e : edges) s += std::sqrt(dist2(m.point(e[0]), m.point(e[1])));
   return edges.empty() ? 0 : s / static_cast<double>(edges.size());

@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/mesh/face_key.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace cvtmesh {
@@ -24,6 +25,9 @@ std::unique_ptr<SizingField3> make_function_sizing3(std::function<double(const d
 // H = the input mesh's local edge length: at each vertex the mean length of its edges,
 // interpolated linearly on the (frozen) input mesh used as background mesh.
 std::unique_ptr<SizingField3> make_mesh_sizing3(const TetMesh& background);
+
+// The edges of the live tets, each once (sorted vertex pairs, sorted).
+std::vector<EdgeKey> unique_edges(const TetMesh& mesh);
 
 // Mean edge length of the mesh (each edge once).
 double mean_edge_length(const TetMesh& mesh);

@@ -99,7 +99,7 @@ CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star,
   }
   ws.queue.clear();
   for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {
-    const int t = star.tet[i];
+    const int t = star.tets[i];
     ws.mark[t] = ws.stamp;
     ws.queue.push_back(t);
   }
@@ -232,7 +232,7 @@ bool dual_voronoi_cell(const TetMesh& m, const VertexStar& star,
   out = CellIntegrals{};
   if (m.vclass[v].dim != 3) return false;
   for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {
-    const int t = star.tet[i];
+    const int t = star.tets[i];
     for (int f = 0; f < 4; ++f)
       if (constrained[4 * t + f]) return false;
     const LocateResult r = locate_point(m, &cc[3 * t], t, &constrained, 16);
@@ -252,7 +252,7 @@ bool dual_voronoi_cell(const TetMesh& m, const VertexStar& star,
   }
   const Vec3 z = vec3(m.point(v));
   for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {
-    const int t = star.tet[i];
+    const int t = star.tets[i];
     const int* tv = &m.tets[4 * t];
     int k = 0;
     while (tv[k] != v) ++k;
