@@ -111,4 +111,14 @@ void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots) {
   }
 }
 
+SwapPlan apply_if_accepted(TetMesh& mesh, SwapPlan plan, const SwapCriterion* criterion) {
+  if (plan.status != SwapStatus::kOk) return plan;
+  if (criterion && !accept_swap(mesh, plan, *criterion)) {
+    plan.status = SwapStatus::kRejected;
+    return plan;
+  }
+  apply_swap(mesh, plan);
+  return plan;
+}
+
 }  // namespace cvtmesh

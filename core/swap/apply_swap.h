@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
+#include "core/swap/accept_swap.h"
 #include "core/swap/swap_plan.h"
 
 namespace cvtmesh {
@@ -15,5 +16,9 @@ namespace cvtmesh {
 // Throws std::invalid_argument if plan.status is not kOk, InvariantError if the new tets do not
 // have exactly the old cavity's boundary faces (a planner bug).
 void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots = nullptr);
+
+// The common tail of flip23 / flip32 / remove_edge: a valid plan is committed if there is no
+// criterion or the criterion accepts it; otherwise its status becomes kRejected. Returns the plan.
+SwapPlan apply_if_accepted(TetMesh& mesh, SwapPlan plan, const SwapCriterion* criterion);
 
 }  // namespace cvtmesh

@@ -1,3 +1,5 @@
+#include <utility>
+
 #include "core/swap/flip23.h"
 
 #include <stdexcept>
@@ -44,13 +46,7 @@ SwapPlan plan_flip23(const TetMesh& mesh, const ConstrainedFaces& constrained, i
 
 SwapPlan flip23(TetMesh& mesh, int t, int f, const SwapCriterion* criterion) {
   SwapPlan plan = plan_flip23(mesh, constrained_faces(mesh), t, f);
-  if (plan.status != SwapStatus::kOk) return plan;
-  if (criterion && !accept_swap(mesh, plan, *criterion)) {
-    plan.status = SwapStatus::kRejected;
-    return plan;
-  }
-  apply_swap(mesh, plan);
-  return plan;
+  return apply_if_accepted(mesh, std::move(plan), criterion);
 }
 
 }  // namespace cvtmesh

@@ -1,3 +1,5 @@
+#include <utility>
+
 #include "core/swap/flip32.h"
 
 #include "core/swap/apply_swap.h"
@@ -16,13 +18,7 @@ SwapPlan plan_flip32(const TetMesh& mesh, const ConstrainedFaces& constrained, i
 SwapPlan flip32(TetMesh& mesh, int t, int e, const SwapCriterion* criterion) {
   const Measure m = criterion ? criterion->measure : Measure::kQ;
   SwapPlan plan = plan_flip32(mesh, constrained_faces(mesh), t, e, m);
-  if (plan.status != SwapStatus::kOk) return plan;
-  if (criterion && !accept_swap(mesh, plan, *criterion)) {
-    plan.status = SwapStatus::kRejected;
-    return plan;
-  }
-  apply_swap(mesh, plan);
-  return plan;
+  return apply_if_accepted(mesh, std::move(plan), criterion);
 }
 
 }  // namespace cvtmesh

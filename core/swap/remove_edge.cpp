@@ -1,3 +1,5 @@
+#include <utility>
+
 #include "core/swap/remove_edge.h"
 
 #include <algorithm>
@@ -107,13 +109,7 @@ SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrain
 SwapPlan remove_edge(TetMesh& mesh, int t, int e, const SwapCriterion* criterion) {
   const Measure m = criterion ? criterion->measure : Measure::kQ;
   SwapPlan plan = plan_remove_edge(mesh, constrained_faces(mesh), t, e, m);
-  if (plan.status != SwapStatus::kOk) return plan;
-  if (criterion && !accept_swap(mesh, plan, *criterion)) {
-    plan.status = SwapStatus::kRejected;
-    return plan;
-  }
-  apply_swap(mesh, plan);
-  return plan;
+  return apply_if_accepted(mesh, std::move(plan), criterion);
 }
 
 }  // namespace cvtmesh
