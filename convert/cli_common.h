@@ -52,6 +52,7 @@ void register_optimize(CLI::App& app);
 void register_mesh(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_check(CLI::App& app);
+void register_bench(CLI::App& app);
 void register_perturb(CLI::App& app);
 
 }  // namespace cvtmesh::cli

@@ -13,6 +13,7 @@ void register_commands(CLI::App& app) {
   register_mesh(app);
   register_compare(app);
   register_check(app);
+  register_bench(app);
   register_perturb(app);
 }
 

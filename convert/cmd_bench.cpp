@@ -1,0 +1,228 @@
+// cvtmesh bench: speed and memory of our methods next to Gmsh's and TetGen's, on the same inputs,
+// in one run. Each measurement runs in a forked child process so that its peak memory (maxrss)
+// is its own. Prints a Markdown table (docs/benchmarks.md is made from it).
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "convert/cli_common.h"
+#include "core/delaunay/tetgen_optimize.h"
+#include "core/io/gmsh_optimizer.h"
+#include "core/pipeline/optimize.h"
+#include "core/util/error.h"
+
+namespace cvtmesh::cli {
+namespace {
+
+struct Row {
+  std::string input, method;
+  long nb_tets_in = 0, nb_tets_out = 0;
+  double seconds = 0, peak_mb = 0;
+  int iterations = 0;
+  double q_avg = 0, q_min = 0, min_dihedral = 0, bad_pct = 0;
+  bool ok = false;
+  std::string error;
+};
+
+using Clock = std::chrono::steady_clock;
+
+// Runs job() in a child; the child writes "key value" lines to a pipe. Peak memory from wait4.
+Row run_isolated(const std::string& input, const std::string& method,
+                 const std::function<void(Row&)>& job) {
+  Row row;
+  row.input = input;
+  row.method = method;
+  int fd[2];
+  if (pipe(fd) != 0) throw std::runtime_error("bench: pipe failed");
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("bench: fork failed");
+  if (pid == 0) {
+    close(fd[0]);
+    Row r;
+    std::ostringstream out;
+    try {
+      job(r);
+      out.precision(17);
+      out << "ok 1\nin " << r.nb_tets_in << "\nout " << r.nb_tets_out << "\nsec " << r.seconds
+          << "\nit " << r.iterations << "\navg " << r.q_avg << "\nmin " << r.q_min << "\ndih "
+          << r.min_dihedral << "\nbad " << r.bad_pct << "\n";
+    } catch (const std::exception& e) {
+      std::string msg = e.what();
+      for (char& c : msg)
+        if (c == '\n') c = ' ';
+      out << "ok 0\nerror " << msg << "\n";
+    }
+    const std::string s = out.str();
+    ssize_t w = write(fd[1], s.data(), s.size());
+    (void)w;
+    close(fd[1]);
+    _exit(0);
+  }
+  close(fd[1]);
+  std::string data;
+  char buf[4096];
+  ssize_t n;
+  while ((n = read(fd[0], buf, sizeof buf)) > 0) data.append(buf, static_cast<std::size_t>(n));
+  close(fd[0]);
+  int status = 0;
+  struct rusage ru {};
+  wait4(pid, &status, 0, &ru);
+  row.peak_mb = ru.ru_maxrss / 1024.0;
+  std::istringstream in(data);
+  std::string key;
+  while (in >> key) {
+    if (key == "error") {
+      std::getline(in, row.error);
+      continue;
+    }
+    double v;
+    in >> v;
+    if (key == "ok")
+      row.ok = v != 0;
+    else if (key == "in")
+      row.nb_tets_in = static_cast<long>(v);
+    else if (key == "out")
+      row.nb_tets_out = static_cast<long>(v);
+    else if (key == "sec")
+      row.seconds = v;
+    else if (key == "it")
+      row.iterations = static_cast<int>(v);
+    else if (key == "avg")
+      row.q_avg = v;
+    else if (key == "min")
+      row.q_min = v;
+    else if (key == "dih")
+      row.min_dihedral = v;
+    else if (key == "bad")
+      row.bad_pct = v;
+  }
+  if (!WIFEXITED(status) && row.error.empty()) row.error = "crashed";
+  return row;
+}
+
+void fill_quality(Row& r, const TetMesh& m) {
+  const QualityStats s = quality_stats(m, "");
+  r.nb_tets_out = s.nb_elements;
+  r.q_avg = s.q_avg;
+  r.q_min = s.q_min;
+  r.min_dihedral = s.min_angle;
+  r.bad_pct = s.bad_pct;
+}
+
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct BenchOpts {
+  std::vector<double> sizes = {25000, 100000};
+  bool femur = false;
+  std::vector<std::string> methods = {"cvdt", "cvdt+swap", "cvdt+swap+smooth", "combined"};
+};
+
+}  // namespace
+
+void register_bench(CLI::App& app) {
+  auto bo = std::make_shared<BenchOpts>();
+  auto opt = std::make_shared<OptimizeOptions>();
+  CLI::App* c = app.add_subcommand("bench",
+                                   "time and peak memory of our methods, Gmsh's meshing/optimizer "
+                                   "and TetGen -q -O on cube_sphere "
+                                   "at several sizes (and the femur); prints a Markdown table");
+  c->add_option("--sizes", bo->sizes,
+                "target numbers of tets of the cube_sphere inputs (default 25000 100000)");
+  c->add_flag("--femur", bo->femur, "also the femur (geo/femur.geo)");
+  c->add_option("--methods", bo->methods, "our methods to run");
+  c->add_option("--max-iterations", opt->max_iterations, "maximum Lloyd / outer iterations");
+  c->add_option("--tolerance", opt->tolerance, "Lloyd tolerance");
+  commands().push_back(
+      {c, [bo, opt] {
+         struct Input {
+           std::string name, path;
+           std::vector<std::pair<std::string, double>> numbers;
+         };
+         std::vector<Input> inputs;
+         const std::string geo = std::string(CVTMESH_SOURCE_DIR) + "/geo/";
+         for (double n : bo->sizes) {
+           // ~24.7k tets at h = 0.065, h_ball = 0.05; #tets ~ h^-3.
+           const double s = std::cbrt(24700.0 / n);
+           inputs.push_back({"cube_sphere ~" + std::to_string(static_cast<long>(n / 1000)) + "k",
+                             geo + "cube_sphere.geo",
+                             {{"h", 0.065 * s}, {"h_ball", 0.05 * s}}});
+         }
+         if (bo->femur) inputs.push_back({"femur", geo + "femur.geo", {}});
+         std::vector<Row> rows;
+         for (const auto& in : inputs) {
+           ReadOptions init_ro;
+           init_ro.gmsh_optimize = false;
+           init_ro.set_numbers = in.numbers;
+           ReadOptions gmsh_ro = init_ro;
+           gmsh_ro.gmsh_optimize = true;
+           // Gmsh: meshing alone (the Init), and meshing with its default optimizer.
+           rows.push_back(run_isolated(in.name, "Gmsh mesh (no optimizer) = Init", [&](Row& r) {
+             const auto t0 = Clock::now();
+             MeshData d = read_mesh(in.path, init_ro);
+             r.seconds = since(t0);
+             r.nb_tets_in = d.tet.nb_tets();
+             fill_quality(r, d.tet);
+           }));
+           rows.push_back(run_isolated(in.name, "Gmsh mesh + Mesh.Optimize", [&](Row& r) {
+             const auto t0 = Clock::now();
+             MeshData d = read_mesh(in.path, gmsh_ro);
+             r.seconds = since(t0);
+             r.nb_tets_in = d.tet.nb_tets();
+             fill_quality(r, d.tet);
+           }));
+           rows.push_back(run_isolated(in.name, "TetGen -q -O on Init", [&](Row& r) {
+             MeshData d = read_mesh(in.path, init_ro);
+             r.nb_tets_in = d.tet.nb_tets();
+             const auto t0 = Clock::now();
+             tetgen_optimize(d.tet);
+             r.seconds = since(t0);
+             r.iterations = 9;
+             fill_quality(r, d.tet);
+           }));
+           for (const auto& m : bo->methods)
+             rows.push_back(run_isolated(in.name, m + " on Init", [&](Row& r) {
+               MeshData d = read_mesh(in.path, init_ro);
+               r.nb_tets_in = d.tet.nb_tets();
+               OptimizeOptions o = *opt;
+               o.method = m;
+               o.progress = nullptr;
+               const OptimizeResult res = optimize(d, o);
+               r.seconds = res.seconds;
+               r.iterations = res.iterations;
+               fill_quality(r, d.tet);
+             }));
+           std::cerr << "cvtmesh: bench " << in.name << " done\n";
+         }
+         std::printf(
+             "| input | method | tets in | tets out | seconds | peak MB | iterations | avg Q | "
+             "Q_min | min dihedral | bad %% |\n");
+         std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+         for (const auto& r : rows) {
+           if (!r.ok) {
+             std::printf("| %s | %s | failed: %s |||||||||\n", r.input.c_str(), r.method.c_str(),
+                         r.error.c_str());
+             continue;
+           }
+           std::printf("| %s | %s | %ld | %ld | %.2f | %.0f | %d | %.4f | %.4f | %.2f | %.2f |\n",
+                       r.input.c_str(), r.method.c_str(), r.nb_tets_in, r.nb_tets_out, r.seconds,
+                       r.peak_mb, r.iterations, r.q_avg, r.q_min, r.min_dihedral, r.bad_pct);
+         }
+         return 0;
+       }});
+}
+
+}  // namespace cvtmesh::cli
