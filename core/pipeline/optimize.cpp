@@ -76,8 +76,11 @@ void run_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
 void run_cvdt_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   run_cvdt3(mesh, o, r);
   const int lloyd_iterations = r.iterations;
+  const bool lloyd_converged = r.converged;
   run_swap3(mesh, o, r);
+  // The method converged when its Lloyd phase did (the swap pass always ends).
   r.iterations = lloyd_iterations;
+  r.converged = lloyd_converged;
 }
 
 // The classical Combined Optimization (CombOpt).
