@@ -61,3 +61,23 @@ TEST(Optimize3d, UnknownMethodAndWrongDimensionAreRefused) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+TEST(Optimize3d, LloydMethodsReportNotConvergedWhenStoppedByTheIterationLimit) {
+  const MeshData init = two_region_cube_sphere();
+  for (const char* method : {"cvdt", "cvdt+swap", "cvdt+swap+smooth"}) {
+    MeshData d = init;
+    OptimizeOptions o;
+    o.method = method;
+    o.max_iterations = 2;
+    o.tolerance = 0;  // cannot be reached
+    const OptimizeResult r = optimize(d, o);
+    EXPECT_EQ(r.iterations, 2) << method;
+    EXPECT_FALSE(r.converged) << method;
+  }
+}
+
+}  // namespace
+}  // namespace cvtmesh
