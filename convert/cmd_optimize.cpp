@@ -44,6 +44,8 @@ void register_optimize(CLI::App& app) {
   commands().push_back(
       {c, [in, out, opt, quiet] {
          MeshData d = read_mesh(in->path, in->to_read_options());
+         // A bad output location fails now, not after the optimization.
+         check_can_write(out->path, out->to_write_options(d, in->path));
          if (!*quiet)
            opt->progress = [](const OptimizeProgress& p) {
              std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f\n",

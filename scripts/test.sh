@@ -7,3 +7,8 @@ scripts/setup.sh
 scripts/build.sh
 cd "${BUILD_DIR:-build}"
 ctest --output-on-failure -j "$(nproc)" --timeout 900
+# Opt-in (about 10 min more on 2 cores): the suite built with ASan + UBSan (docs/reliability.md).
+if [ "${CVTMESH_SANITIZE_TESTS:-0}" = 1 ]; then
+  cd - > /dev/null
+  scripts/sanitize.sh
+fi

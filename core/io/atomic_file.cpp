@@ -22,13 +22,18 @@ std::string dir_of(const std::string& path) {
 }
 }  // namespace
 
-AtomicFile::AtomicFile(const std::string& target) : target_(target) {
+void check_directory_writable(const std::string& target) {
   const std::string dir = dir_of(target);
   struct stat st;
   if (stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
     throw OutputError("cannot write '" + target + "': directory '" + dir + "' does not exist");
   if (access(dir.c_str(), W_OK) != 0)
     throw OutputError("cannot write '" + target + "': directory '" + dir + "' is not writable");
+}
+
+AtomicFile::AtomicFile(const std::string& target) : target_(target) {
+  check_directory_writable(target);
+  const std::string dir = dir_of(target);
   const fs::path p(target);
   std::random_device rd;
   char buf[32];

@@ -36,6 +36,10 @@ struct OutputPolicy {
 // the input itself without in_place, a directory, a missing directory).
 void check_output_allowed(const std::string& target, const OutputPolicy& policy);
 
+// Throws OutputError if the directory of `target` does not exist or is not writable (what
+// AtomicFile's constructor checks).
+void check_directory_writable(const std::string& target);
+
 // True if both paths name the same existing file (same device and inode).
 bool same_file(const std::string& a, const std::string& b);
 

@@ -152,7 +152,16 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   } remove_wrapper{wrapper_dir, wrapper};
   gmsh_checked("cannot read '" + path + "'", [&] {
     gmsh::option::setNumber("General.NumThreads", 1);
+    std::vector<std::string> log_before, log;
+    gmsh::logger::get(log_before);
     gmsh::open(wrapper.empty() ? path : wrapper);
+    // Gmsh keeps the first of two nodes or elements with one tag and only logs it: ambiguous
+    // data, refused (the log holds messages only when our session started the logger).
+    gmsh::logger::get(log);
+    for (std::size_t i = std::min(log_before.size(), log.size()); i < log.size(); ++i)
+      for (const char* dup : {"Skipping duplicate node", "Skipping duplicate element"})
+        if (const auto at = log[i].find(dup); at != std::string::npos)
+          throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) + ")");
   });
   try {
     gmsh_checked("cannot mesh '" + path + "'", [&] {

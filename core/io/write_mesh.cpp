@@ -126,28 +126,40 @@ std::string supported_write_formats() {
   return s;
 }
 
-void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
+void check_can_write(const std::string& path, const WriteOptions& options) {
   const std::string ext = file_extension(path);
   if (ext.empty())
     throw OutputError("cannot write '" + path + "': no file extension to choose the format from");
-  if (data.dim != 2 && data.dim != 3)
-    throw InvariantError("write_mesh: MeshData.dim must be 2 or 3");
-  const MeshWriter* own = find_writer(ext);
-  if (!own && !gmsh_writes(ext) && !is_tetgen(ext))
+  if (!find_writer(ext) && !gmsh_writes(ext) && !is_tetgen(ext))
     throw OutputError("cannot write '" + path + "': unknown output format '" + ext +
                       "' (supported: " + supported_write_formats() + ")");
   if (!options.fields.empty() && !holds_fields(ext))
     throw OutputError("cannot write '" + path + "': the " + ext +
                       " format cannot hold per-element data (--quality); use .msh, .vtk, .vtu or "
                       ".node");
+  if (options.msh_version != 4.1 && options.msh_version != 2.2)
+    throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) +
+                      " (use 4.1 or 2.2)");
+  if (is_tetgen(ext)) {
+    // .node and .ele here; the facet file (.face or .edge, by dimension) when writing.
+    const TetgenFiles files = tetgen_files(path, 3);
+    for (const std::string* f : {&files.node, &files.ele}) check_output_allowed(*f, options.policy);
+  } else {
+    check_output_allowed(path, options.policy);
+  }
+  check_directory_writable(path);
+}
+
+void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
+  if (data.dim != 2 && data.dim != 3)
+    throw InvariantError("write_mesh: MeshData.dim must be 2 or 3");
+  check_can_write(path, options);
+  const std::string ext = file_extension(path);
+  const MeshWriter* own = find_writer(ext);
   if (is_tetgen(ext)) {
     write_tetgen_files(data, path, options);
     return;
   }
-  if (options.msh_version != 4.1 && options.msh_version != 2.2)
-    throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) +
-                      " (use 4.1 or 2.2)");
-  check_output_allowed(path, options.policy);
   AtomicFile out(path);
   if (own)
     (*own)(data, out.temp_path(), options.fields);

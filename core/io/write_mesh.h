@@ -24,6 +24,11 @@ struct WriteOptions {
 // Throws OutputError (cannot write, refused) or InputError (format cannot hold this mesh).
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
+// What write_mesh would refuse without looking at the mesh, checked before a long computation:
+// no or unknown extension, per-element data the format cannot hold, the output policy (existing
+// file, the input itself, a directory), a missing or read-only directory. Throws OutputError.
+void check_can_write(const std::string& path, const WriteOptions& options = {});
+
 // The extensions write_mesh understands, for --help.
 std::string supported_write_formats();
 

@@ -154,98 +154,6 @@ $Elements
 $EndElements
 )";
 
-std::string edit(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
-
-// Two cells in one volume: a hexahedron and a tet.
-const char* kHexAndTet = R"($MeshFormat
-4.1 0 8
-$EndMeshFormat
-$Entities
-0 0 0 1
-1 0 0 0 2 1 1 0 0
-$EndEntities
-$Nodes
-1 12 1 12
-3 1 0 12
-1
-2
-3
-4
-5
-6
-7
-8
-9
-10
-11
-12
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-2 0 0
-2 1 0
-2 0 1
-2 1 1
-$EndNodes
-$Elements
-2 2 1 2
-3 1 5 1
-1 1 2 3 4 5 6 7 8
-3 1 4 1
-2 2 9 10 11
-$EndElements
-)";
-
-std::string second_order_tet() {
-  return R"($MeshFormat
-4.1 0 8
-$EndMeshFormat
-$Entities
-0 0 0 1
-1 0 0 0 1 1 1 0 0
-$EndEntities
-$Nodes
-1 10 1 10
-3 1 0 10
-1
-2
-3
-4
-5
-6
-7
-8
-9
-10
-0 0 0
-1 0 0
-0 1 0
-0 0 1
-0.5 0 0
-0.5 0.5 0
-0 0.5 0
-0 0 0.5
-0 0.5 0.5
-0.5 0 0.5
-$EndNodes
-$Elements
-1 1 1 1
-3 1 11 1
-1 1 2 3 4 5 6 7 8 9 10
-$EndElements
-)";
-}
-
 struct BadCase {
   std::string name;     // input file name (in the test directory)
   std::string content;  // written unless empty and `make` is set
@@ -279,39 +187,7 @@ void expect_refused(const std::string& dir, const BadCase& c) {
   (void)in;
 }
 
-TEST(CliBadInput, EachGivesOneLineNamingTheFileAndNoOutput) {
-  const std::string dir = testing::temp_dir();
-  const std::string tet = kTet;
-  std::vector<BadCase> cases = {
-      {"missing.msh", "", "no such file"},
-      {"empty.msh", "", "empty"},
-      {"truncated_nodes.msh", tet.substr(0, tet.find("0 1 0\n")), "truncated"},
-      {"truncated_elements.msh", tet.substr(0, tet.find("2 3 4\n$EndElements")), "truncated"},
-      {"garbage.msh", "\x7f\x45\x4c\x46 this is not a mesh at all\n", "not a Gmsh .msh"},
-      {"version.msh", edit(tet, "4.1 0 8", "7.3 0 8"), "version"},
-      {"hexahedron.msh", kHexAndTet, "Hexahedron"},
-      {"second_order.msh", second_order_tet(), "Tetrahedron 10"},
-      {"inverted.msh", edit(tet, "1 1 2 3 4\n", "1 2 1 3 4\n"), "inverted"},
-      {"nan.msh", edit(tet, "\n1 0 0\n", "\nnan 0 0\n"), "NaN"},
-      {"missing_node.msh", edit(tet, "1 1 2 3 4\n", "1 1 2 3 9\n"), "node 9"},
-      {"syntax.geo", "Point(1) = {0, 0, 0, 1};\nPoint(2) = {1, 0, 0, 1;\n", "syntax error"},
-      {"nothing.geo", "Point(1) = {0, 0, 0, 1};\nPoint(2) = {1, 0, 0, 1};\nLine(1) = {1, 2};\n",
-       "only 2D triangle and 3D tetrahedral"},
-      {"open.stl",
-       "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
-       "endloop\nendfacet\nendsolid x\n",
-       "not closed"},
-      {"good.msh", tet, "out:unknown output format", "out.xyz"},
-      {"good2.msh", tet, "out:does not exist", "nodir/out.msh"},
-      {"good3.msh", tet, "out:cannot hold per-element data", "out.mesh", "--quality"},
-  };
-  for (const BadCase& c : cases)
-    if (c.name != "missing.msh") spit(dir + "/" + c.name, c.content);
-  for (const BadCase& c : cases) expect_refused(dir, c);
-  // A directory as input.
-  fs::create_directory(dir + "/adir.msh");
-  expect_refused(dir, {"adir.msh", "", "is a directory"});
-}
+// The bad-input cases themselves are in tests/bad_input/ (the corpus, run through the CLI).
 
 TEST(CliBadInput, OutputIntoAReadOnlyDirectory) {
   const std::string dir = testing::temp_dir();
