@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "tests/io/gmsh_dump.h"
+#include "tests/bad_input/corpus.h"
 #include "tests/support/test_meshes.h"
 
 namespace cvtmesh {
@@ -128,31 +129,8 @@ TEST(Cli, ConvertsToEveryOwnFormat) {
 // ---------------------------------------------------------------------------------------------
 // Bad input
 
-const char* kTet = R"($MeshFormat
-4.1 0 8
-$EndMeshFormat
-$Entities
-0 0 0 1
-1 0 0 0 1 1 1 0 0
-$EndEntities
-$Nodes
-1 4 1 4
-3 1 0 4
-1
-2
-3
-4
-0 0 0
-1 0 0
-0 1 0
-0 0 1
-$EndNodes
-$Elements
-1 1 1 1
-3 1 4 1
-1 1 2 3 4
-$EndElements
-)";
+// A valid one-tet .msh (shared with the bad-input corpus).
+const std::string kTet = testing::good_tet_msh();
 
 struct BadCase {
   std::string name;     // input file name (in the test directory)

@@ -78,10 +78,13 @@ namespace {
 
 TEST(OptimizeCli, BenchPrintsOneSuccessfulRowPerMeasurement) {
   std::string out;
-  ASSERT_EQ(testing::run(testing::cli_path() + " bench --sizes 3000 --methods swap cvdt --max-iterations 2", &out), 0)
+  ASSERT_EQ(
+      testing::run(
+          testing::cli_path() + " bench --sizes 3000 --methods swap cvdt --max-iterations 2", &out),
+      0)
       << out;
-  for (const char* row : {"Gmsh mesh (no optimizer) = Init", "Gmsh mesh + Mesh.Optimize", "TetGen -q -O on Init",
-                          "swap on Init", "cvdt on Init"})
+  for (const char* row : {"Gmsh mesh (no optimizer) = Init", "Gmsh mesh + Mesh.Optimize",
+                          "TetGen -q -O on Init", "swap on Init", "cvdt on Init"})
     EXPECT_NE(out.find(row), std::string::npos) << row;
   EXPECT_EQ(out.find("failed"), std::string::npos) << out;
 }
