@@ -79,10 +79,7 @@ TEST(Lloyd3, ClippedCellCentroidMatchesMonteCarloNearestGenerator) {
 }
 
 MeshData coarse_cube_sphere(bool optimized) {
-  ReadOptions ro;
-  ro.gmsh_optimize = optimized;
-  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
-  return read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  return testing::cube_sphere(0.14, 0.1, optimized);
 }
 
 std::multiset<std::tuple<int, int, int, int>> constrained_set(const TetMesh& m) {
@@ -164,10 +161,7 @@ namespace cvtmesh {
 namespace {
 
 TEST(Lloyd3, AndersonAcceleratedAcceptedEnergiesNeverIncrease) {
-  ReadOptions ro;
-  ro.gmsh_optimize = false;
-  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
-  MeshData d = read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  MeshData d = testing::cube_sphere(0.14, 0.1);
   Lloyd3Options o;
   o.lloyd.max_iterations = 10;
   o.lloyd.tolerance = 0;
@@ -199,10 +193,7 @@ namespace cvtmesh {
 namespace {
 
 TEST(Lloyd3, SameResultForAnyThreadCount) {
-  ReadOptions ro;
-  ro.gmsh_optimize = false;
-  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}};
-  const MeshData init = read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  const MeshData init = testing::cube_sphere(0.14, 0.1);
   std::vector<TetMesh> results;
   const int saved = omp_get_max_threads();
   for (int threads : {1, 2}) {

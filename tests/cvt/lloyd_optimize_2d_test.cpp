@@ -23,18 +23,7 @@ std::vector<int> fixed_vertices(const TriMesh2& m) {
   return f;
 }
 
-// Largest distance from a vertex of a to the nearest vertex of b.
-double max_nearest_distance(const TriMesh2& a, const TriMesh2& b) {
-  double worst = 0;
-  for (int i = 0; i < a.nb_vertices(); ++i) {
-    double best = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < b.nb_vertices(); ++j)
-      best =
-          std::min(best, std::hypot(a.point(i)[0] - b.point(j)[0], a.point(i)[1] - b.point(j)[1]));
-    worst = std::max(worst, best);
-  }
-  return worst;
-}
+using testing::max_nearest_distance;
 
 // RandPert on the regular quad mesh, then Lloyd with a uniform density: the energy never
 // increases, every intermediate mesh is valid, the boundary never moves, and the iteration

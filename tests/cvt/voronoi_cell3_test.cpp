@@ -8,15 +8,13 @@
 #include "core/delaunay/delaunay3.h"
 #include "core/io/read_mesh.h"
 #include "core/pipeline/verify_mesh.h"
+#include "tests/support/test_meshes.h"
 
 namespace cvtmesh {
 namespace {
 
 TEST(VoronoiCell3, RestrictedCellsPartitionTheDomain) {
-  ReadOptions ro;
-  ro.gmsh_optimize = false;
-  ro.set_numbers = {{"h", 0.15}, {"h_ball", 0.12}};
-  MeshData d = read_mesh(std::string(CVTMESH_SOURCE_DIR) + "/geo/cube_sphere.geo", ro);
+  MeshData d = testing::cube_sphere(0.15, 0.12);
   const TetMesh& m = d.tet;
   const VertexStar star = build_vertex_star(m);
   const auto cf = constrained_face_flags(m);
@@ -35,9 +33,7 @@ namespace cvtmesh {
 namespace {
 
 TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
-  ReadOptions ro;
-  ro.set_numbers = {{"h", 0.09}, {"h_ball", 0.07}};
-  MeshData d = read_mesh(std::string(CVTMESH_SOURCE_DIR) + "/geo/cube_sphere.geo", ro);
+  MeshData d = testing::cube_sphere(0.09, 0.07, /*gmsh_optimize=*/true);
   // Gmsh's optimizer leaves non-Delaunay faces: rebuild the constrained Delaunay mesh first.
   Delaunay3::create("tetgen")->retetrahedralize(d.tet);
   const TetMesh& m = d.tet;

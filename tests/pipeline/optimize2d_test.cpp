@@ -17,17 +17,7 @@
 namespace cvtmesh {
 namespace {
 
-double max_nearest_distance(const TriMesh2& a, const TriMesh2& b) {
-  double worst = 0;
-  for (int i = 0; i < a.nb_vertices(); ++i) {
-    double best = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < b.nb_vertices(); ++j)
-      best =
-          std::min(best, std::hypot(a.point(i)[0] - b.point(j)[0], a.point(i)[1] - b.point(j)[1]));
-    worst = std::max(worst, best);
-  }
-  return worst;
-}
+using testing::max_nearest_distance;
 
 void expect_boundary_kept(const TriMesh2& before, const TriMesh2& after) {
   ASSERT_EQ(before.nb_vertices(), after.nb_vertices());

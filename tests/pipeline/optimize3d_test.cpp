@@ -17,10 +17,7 @@ namespace cvtmesh {
 namespace {
 
 MeshData two_region_cube_sphere() {
-  ReadOptions ro;
-  ro.gmsh_optimize = false;
-  ro.set_numbers = {{"h", 0.14}, {"h_ball", 0.1}, {"two_regions", 1}};
-  return read_mesh(testing::geo_path("cube_sphere.geo"), ro);
+  return testing::cube_sphere(0.14, 0.1, false, {{"two_regions", 1}});
 }
 
 TEST(Optimize3d, EveryMethodKeepsRegionsInterfacesAndGroupsOfTheTwoRegionModel) {

@@ -2,11 +2,15 @@
 
 #include <array>
 #include <cstdio>
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <filesystem>
 #include <unistd.h>
 
 #include "core/geometry/predicates.h"
+#include "core/io/read_mesh.h"
 #include "core/mesh/build_adjacency.h"
 
 namespace cvtmesh::testing {
@@ -55,21 +59,15 @@ int run(const std::string& cmd, std::string* output) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
-TetMesh cube6() {
+TetMesh make_tet_mesh(const std::vector<std::array<double, 3>>& points,
+                      const std::vector<std::array<int, 4>>& tets,
+                      const std::vector<int>& interior) {
   TetMesh m;
-  for (int i = 0; i < 8; ++i) {
-    m.xyz.push_back(i & 1);
-    m.xyz.push_back((i >> 1) & 1);
-    m.xyz.push_back((i >> 2) & 1);
-  }
-  // Kuhn triangulation: paths from 0 to 7 through the cube's vertices.
-  const int paths[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7},
-                           {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
-  for (const auto& p : paths) {
-    int t[4] = {p[0], p[1], p[2], p[3]};
+  for (const auto& p : points) m.xyz.insert(m.xyz.end(), p.begin(), p.end());
+  for (auto t : tets) {
     if (orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
       std::swap(t[2], t[3]);
-    m.tets.insert(m.tets.end(), t, t + 4);
+    m.tets.insert(m.tets.end(), t.begin(), t.end());
     m.tet_region.push_back(1);
   }
   build_adjacency(m);
@@ -79,8 +77,39 @@ TetMesh cube6() {
         for (int k = 0; k < 3; ++k) m.tris.push_back(m.tets[4 * t + kTetFace[f][k]]);
         m.tri_surface.push_back(1);
       }
-  m.vclass.assign(8, VertexClass{2, 1});
+  m.vclass.assign(points.size(), VertexClass{2, 1});
+  for (int v : interior) m.vclass[v] = VertexClass{3, 1};
   return m;
+}
+
+MeshData cube_sphere(double h, double h_ball, bool gmsh_optimize,
+                     const std::vector<std::pair<std::string, double>>& extra) {
+  ReadOptions ro;
+  ro.gmsh_optimize = gmsh_optimize;
+  ro.set_numbers = {{"h", h}, {"h_ball", h_ball}};
+  ro.set_numbers.insert(ro.set_numbers.end(), extra.begin(), extra.end());
+  return read_mesh(geo_path("cube_sphere.geo"), ro);
+}
+
+double max_nearest_distance(const TriMesh2& a, const TriMesh2& b) {
+  double worst = 0;
+  for (int i = 0; i < a.nb_vertices(); ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < b.nb_vertices(); ++j)
+      best =
+          std::min(best, std::hypot(a.point(i)[0] - b.point(j)[0], a.point(i)[1] - b.point(j)[1]));
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+
+TetMesh cube6() {
+  std::vector<std::array<double, 3>> pts;
+  for (int i = 0; i < 8; ++i)
+    pts.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  // Kuhn triangulation: paths from 0 to 7 through the cube's vertices.
+  return make_tet_mesh(
+      pts, {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}});
 }
 
 TriMesh2 square2() {
@@ -111,28 +140,18 @@ TetMesh delaunay_of_points(const std::vector<double>& xyz) {
   std::copy(xyz.begin(), xyz.end(), in.pointlist);
   char sw[] = "zQ";
   tetgen_library().tetrahedralize(sw, &in, &out, nullptr, nullptr);
-  TetMesh m;
-  m.xyz = xyz;
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
-    int v[4];
-    for (int k = 0; k < 4; ++k) v[k] = out.tetrahedronlist[4 * t + k];
-    if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0)
-      std::swap(v[2], v[3]);
-    m.tets.insert(m.tets.end(), v, v + 4);
-    m.tet_region.push_back(1);
-  }
-  build_adjacency(m);
-  m.vclass.assign(m.nb_vertices(), VertexClass{3, 1});
-  for (int t = 0; t < m.nb_tets(); ++t)
-    for (int f = 0; f < 4; ++f)
-      if (m.adj[4 * t + f] < 0) {
-        for (int k = 0; k < 3; ++k) {
-          const int v = m.tets[4 * t + kTetFace[f][k]];
-          m.tris.push_back(v);
-          m.vclass[v] = VertexClass{2, 1};
-        }
-        m.tri_surface.push_back(1);
-      }
+  std::vector<std::array<double, 3>> pts(xyz.size() / 3);
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    pts[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  std::vector<std::array<int, 4>> tets(out.numberoftetrahedra);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+    for (int k = 0; k < 4; ++k) tets[t][k] = out.tetrahedronlist[4 * t + k];
+  // Hull vertices are fixed, the others interior.
+  TetMesh m = make_tet_mesh(pts, tets);
+  std::vector<char> on_hull(pts.size(), 0);
+  for (int v : m.tris) on_hull[v] = 1;
+  for (std::size_t v = 0; v < pts.size(); ++v)
+    if (!on_hull[v]) m.vclass[v] = VertexClass{3, 1};
   return m;
 }
 

@@ -1,8 +1,11 @@
 // Small hand-built meshes and helpers shared by the tests.
 #pragma once
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "core/io/mesh_data.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/mesh/tri_mesh2.h"
 
@@ -16,6 +19,21 @@ std::string shared_path(const std::string& rel);
 std::string temp_dir();
 // Runs a shell command, returns its exit code; stdout+stderr captured into *output if given.
 int run(const std::string& cmd, std::string* output = nullptr);
+
+// A mesh from points and tets (each reordered to be positively oriented), one region, adjacency
+// built, and its boundary faces as the constrained triangles (surface 1). Vertices listed in
+// `interior` get vclass.dim 3, the others 2.
+TetMesh make_tet_mesh(const std::vector<std::array<double, 3>>& points,
+                      const std::vector<std::array<int, 4>>& tets,
+                      const std::vector<int>& interior = {});
+
+// geo/cube_sphere.geo meshed by Gmsh with edge lengths h (far) and h_ball; Gmsh's optimizer off
+// (the paper's Init) unless gmsh_optimize; extra .geo numbers (e.g. {"two_regions", 1}).
+MeshData cube_sphere(double h, double h_ball, bool gmsh_optimize = false,
+                     const std::vector<std::pair<std::string, double>>& extra = {});
+
+// Largest distance from a vertex of a to the nearest vertex of b (2D meshes).
+double max_nearest_distance(const TriMesh2& a, const TriMesh2& b);
 
 // The unit cube split into 6 tets around the diagonal (0,0,0)-(1,1,1), 8 vertices, with its 12
 // boundary triangles on surface 1, region 1, adjacency built.

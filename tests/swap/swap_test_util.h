@@ -17,31 +17,7 @@
 
 namespace cvtmesh::testing {
 
-// A mesh from points and tets (each reordered to be positively oriented), one region, adjacency
-// built, and its boundary faces as the constrained triangles (surface 1). Vertices listed in
-// `interior` get vclass.dim 3, the others 2.
-inline TetMesh make_tet_mesh(const std::vector<std::array<double, 3>>& points,
-                             const std::vector<std::array<int, 4>>& tets,
-                             const std::vector<int>& interior = {}) {
-  TetMesh m;
-  for (const auto& p : points) m.xyz.insert(m.xyz.end(), p.begin(), p.end());
-  for (auto t : tets) {
-    if (orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
-      std::swap(t[2], t[3]);
-    m.tets.insert(m.tets.end(), t.begin(), t.end());
-    m.tet_region.push_back(1);
-  }
-  build_adjacency(m);
-  for (int t = 0; t < m.nb_tets(); ++t)
-    for (int f = 0; f < 4; ++f)
-      if (m.adj[4 * t + f] < 0) {
-        for (int k = 0; k < 3; ++k) m.tris.push_back(m.tets[4 * t + kTetFace[f][k]]);
-        m.tri_surface.push_back(1);
-      }
-  m.vclass.assign(points.size(), VertexClass{2, 1});
-  for (int v : interior) m.vclass[v] = VertexClass{3, 1};
-  return m;
-}
+// make_tet_mesh(points, tets, interior) is in tests/support/test_meshes.h.
 
 // The n tets around the vertical edge p = 0 (0,0,-h), q = 1 (0,0,h), ring r_i = 2+i on the unit
 // circle at height z (a regular n-gon).
