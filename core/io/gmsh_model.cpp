@@ -9,6 +9,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "core/geometry/z_range.h"
 #include "core/geometry/predicates.h"
 #include "core/io/gmsh_session.h"
 #include "core/mesh/build_adjacency.h"
@@ -213,13 +214,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       TriMesh2& m = out.tri;
       const std::size_t n = all_tags.size();
       // Planarity: every node of the 2D mesh at the same z (relative tolerance).
-      double zmin = 1e300, zmax = -1e300, extent = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        zmin = std::min(zmin, xyz[3 * i + 2]);
-        zmax = std::max(zmax, xyz[3 * i + 2]);
-        extent = std::max({extent, std::fabs(xyz[3 * i]), std::fabs(xyz[3 * i + 1])});
-      }
-      if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+      const ZRange zr = z_range(xyz);
+      const double zmin = zr.zmin, zmax = zr.zmax;
+      if (!zr.planar)
         throw InputError(what + ": the triangle mesh is not planar (z varies from " +
                          std::to_string(zmin) + " to " + std::to_string(zmax) +
                          "); 2D optimization needs a mesh in a plane z = const");

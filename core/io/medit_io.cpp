@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 
+#include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
 #include "core/io/text_reader.h"
 #include "core/util/error.h"
@@ -172,14 +173,9 @@ MeshData read_medit(const std::string& path) {
     TriMesh2& m = data.tri;
     if (dim == 3) {
       // A triangle mesh in space: accepted as 2D if it lies in a plane z = const.
-      double zmin = 1e300, zmax = -1e300, extent = 0;
-      for (int v : tris) {
-        if (v < 0 || v >= nv) continue;  // reported by finish_mesh
-        zmin = std::min(zmin, xyz[3 * v + 2]);
-        zmax = std::max(zmax, xyz[3 * v + 2]);
-        extent = std::max({extent, std::fabs(xyz[3 * v]), std::fabs(xyz[3 * v + 1])});
-      }
-      if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+      const ZRange zr = z_range(xyz, &tris);  // out-of-range ids are reported by finish_mesh
+      const double zmin = zr.zmin;
+      if (!zr.planar)
         throw InputError(what +
                          " has no tetrahedra and its triangles are not in a plane z = const "
                          "(a surface mesh cannot be optimized as 2D or 3D)");

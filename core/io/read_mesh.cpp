@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_missing_facets.h"
@@ -81,13 +82,9 @@ MeshData read_surface_file(const std::string& path, const ReadOptions& options) 
   const SurfaceMesh s = read_surface(path, false);
   MeshData d;
   d.dim = 2;
-  double zmin = 1e300, zmax = -1e300, extent = 0;
-  for (std::size_t v = 0; v < s.xyz.size() / 3; ++v) {
-    zmin = std::min(zmin, s.xyz[3 * v + 2]);
-    zmax = std::max(zmax, s.xyz[3 * v + 2]);
-    extent = std::max({extent, std::fabs(s.xyz[3 * v]), std::fabs(s.xyz[3 * v + 1])});
-  }
-  if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+  const ZRange zr = z_range(s.xyz);
+  const double zmin = zr.zmin;
+  if (!zr.planar)
     throw InputError(what +
                      ": the surface is not in a plane z = const, so it cannot be read as a "
                      "2D mesh (--dim 2)");

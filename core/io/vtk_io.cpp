@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
 #include "core/io/text_reader.h"
 #include "core/util/error.h"
@@ -227,13 +228,9 @@ MeshData grid_to_mesh(const Grid& g, const std::string& path, std::vector<Elemen
     data.tet.tri_surface = std::move(facet_tag);
     data.tet.model.name = name;
   } else {
-    double zmin = 1e300, zmax = -1e300, extent = 0;
-    for (int v : cells) {
-      zmin = std::min(zmin, g.xyz[3 * v + 2]);
-      zmax = std::max(zmax, g.xyz[3 * v + 2]);
-      extent = std::max({extent, std::fabs(g.xyz[3 * v]), std::fabs(g.xyz[3 * v + 1])});
-    }
-    if (zmax - zmin > 1e-10 * std::max(1.0, extent))
+    const ZRange zr = z_range(g.xyz, &cells);
+    const double zmin = zr.zmin;
+    if (!zr.planar)
       throw InputError(what +
                        " has no tetrahedra and its triangles are not in a plane z = const "
                        "(a surface mesh cannot be optimized as 2D or 3D)");
