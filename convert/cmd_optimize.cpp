@@ -48,9 +48,14 @@ void register_optimize(CLI::App& app) {
          check_can_write(out->path, out->to_write_options(d, in->path));
          if (!*quiet)
            opt->progress = [](const OptimizeProgress& p) {
-             std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f\n",
+             std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f",
                           p.phase.c_str(), p.iteration, p.restarted ? "*" : " ", p.D, p.energy,
                           p.q_min, p.q_avg);
+             if (p.nb_dual_cells + p.nb_clipped_cells > 0)
+               std::fprintf(stderr, "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs, %.2fs]",
+                            p.seconds_cells, p.nb_dual_cells, p.nb_clipped_cells,
+                            p.seconds_delaunay, p.seconds_other);
+             std::fprintf(stderr, "\n");
            };
          const OptimizeResult r = optimize(d, *opt);
          write_mesh(d, out->path, out->to_write_options(d, in->path));

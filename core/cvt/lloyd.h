@@ -23,6 +23,10 @@ struct LloydStep {
   int nb_free = 0;         // generators allowed to move
   int nb_limited = 0;      // moves shortened by a safeguard (target outside the domain, ...)
   bool restarted = false;  // an accelerated step was rejected (energy rose): plain step taken
+  // Where the time went (wall seconds; 0 where a dimension does not measure it) and how the
+  // cells were computed (3D: exact Delaunay dual vs clipped by the bisectors).
+  double seconds_cells = 0, seconds_move = 0, seconds_delaunay = 0, seconds_check = 0;
+  int nb_dual_cells = 0, nb_clipped_cells = 0;
 };
 
 struct LloydResult {

@@ -1,9 +1,12 @@
 #include "core/cvt/lloyd3.h"
 
+#include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <string>
 
 #include "core/cvt/anderson.h"
+#include "core/cvt/cell_mesh.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/delaunay/delaunay3.h"
 #include "core/mesh/check_mesh.h"
@@ -13,6 +16,11 @@
 
 namespace cvtmesh {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 // rho = 1/H^5 at every vertex of the mesh (P1 density for the cells); H at every vertex too.
 void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<int>& hints,
@@ -28,12 +36,6 @@ void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<in
   }
 }
 
-double coordinate_eps(const TetMesh& m) {
-  double emax = 0;
-  for (double x : m.xyz) emax = std::max(emax, std::fabs(x));
-  return 1e-12 * std::max(1.0, emax);
-}
-
 }  // namespace
 
 CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
@@ -42,24 +44,21 @@ CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizi
   const int nv = mesh.nb_vertices();
   c.centroid.assign(3 * static_cast<std::size_t>(nv), 0);
   c.mass.assign(nv, 0);
-  const VertexStar star = build_vertex_star(mesh);
-  const std::vector<char> constrained = constrained_face_flags(mesh);
+  const CellMesh cm = prepare_cell_mesh(mesh);
   CellWorkspace ws;
   std::vector<int> local_hints;
   if (!hints) hints = &local_hints;
   std::vector<double> H, rho;
   vertex_density(mesh, sizing, *hints, H, rho);
-  const double eps = coordinate_eps(mesh);
-  const std::vector<double> cc = tet_circumcenters(mesh);
   for (int v = 0; v < nv; ++v) {
     const double* z = mesh.point(v);
-    if (star.offset[v] == star.offset[v + 1]) {
+    if (cm.star.nb_tets_of(v) == 0) {
       for (int d = 0; d < 3; ++d) c.centroid[3 * v + d] = z[d];
       continue;
     }
     CellIntegrals ci;
-    if (!dual_voronoi_cell(mesh, star, constrained, cc, v, &rho, ci))
-      ci = restricted_voronoi_cell(mesh, star, constrained, v, eps, ws, &rho);
+    if (!dual_voronoi_cell(mesh, cm, v, &rho, ci))
+      ci = restricted_voronoi_cell(mesh, cm, v, ws, &rho);
     const Vec3 x = ci.centroid(z);
     for (int d = 0; d < 3; ++d) c.centroid[3 * v + d] = x[d];
     c.mass[v] = ci.mass;
@@ -85,19 +84,19 @@ class Lloyd3Problem {
   LloydStep step() {
     LloydStep s;
     const int nv = m_.nb_vertices();
-    const VertexStar star = build_vertex_star(m_);
-    const std::vector<char> constrained = constrained_face_flags(m_);
-    const double eps = coordinate_eps(m_);
+    const auto t0 = Clock::now();
+    const CellMesh cm = prepare_cell_mesh(m_);
+    const VertexStar& star = cm.star;
+    const std::vector<char>& constrained = cm.constrained;
     vertex_density(m_, *sizing_, hints_, H_, rho_);
-    const std::vector<double> cc = tet_circumcenters(m_);
     // Cells of the current configuration: energy, centroids of the free vertices, D. The cells are
     // independent: computed in parallel into per-vertex slots, then reduced in vertex order (the
     // result does not depend on the number of threads).
     std::vector<CellIntegrals> cells(nv);
-    std::vector<char> wanted(nv, 0);
+    std::vector<char> wanted(nv, 0), clipped(nv, 1);
     for (int v = 0; v < nv; ++v) {
       const bool has_star = star.offset[v] < star.offset[v + 1];
-      wanted[v] = has_star && (m_.vclass[v].dim == 3 || o_.compute_energy);
+      wanted[v] = has_star && (m_.vclass[v].dim == 3 || (o_.compute_energy && !getenv("NOE")));
     }
 #pragma omp parallel
     {
@@ -105,10 +104,15 @@ class Lloyd3Problem {
 #pragma omp for schedule(dynamic, 64)
       for (int v = 0; v < nv; ++v) {
         if (!wanted[v]) continue;
-        if (!dual_voronoi_cell(m_, star, constrained, cc, v, &rho_, cells[v]))
-          cells[v] = restricted_voronoi_cell(m_, star, constrained, v, eps, local_ws, &rho_);
+        if (dual_voronoi_cell(m_, cm, v, &rho_, cells[v]))
+          clipped[v] = 0;
+        else
+          cells[v] = restricted_voronoi_cell(m_, cm, v, local_ws, &rho_);
       }
     }
+    for (int v = 0; v < nv; ++v)
+      if (wanted[v]) (clipped[v] ? s.nb_clipped_cells : s.nb_dual_cells)++;
+    s.seconds_cells = seconds_since(t0);
     std::vector<int> free_ids;
     std::vector<double> z_free, c_free;
     double dsum = 0;
@@ -174,9 +178,14 @@ class Lloyd3Problem {
     }
     // Move and re-triangulate.
     m_.xyz = target;
+    s.seconds_move = seconds_since(t0) - s.seconds_cells;
+    const auto t1 = Clock::now();
     const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
+    s.seconds_delaunay = seconds_since(t1);
     nb_steiner_ += ds.nb_steiner;
+    const auto t2 = Clock::now();
     verify_after_step();
+    s.seconds_check = seconds_since(t2);
     return s;
   }
 

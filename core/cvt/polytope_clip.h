@@ -1,6 +1,6 @@
-// A convex polytope (faces as polygons in one flat array) clipped by half-spaces, and its moments.
-// Used to build Voronoi cells restricted to a tet (cell ∩ tet = tet clipped by the bisector
-// half-spaces). Flat storage, reused buffers: no allocation in the hot loop once warmed up.
+// A convex polytope (unique vertices + faces as index cycles, flat arrays) clipped by half-spaces,
+// and its moments. Used to build Voronoi cells restricted to a tet (cell ∩ tet = tet clipped by
+// the bisector half-spaces). Reused buffers: no allocation in the hot loop once warmed up.
 #pragma once
 #include <array>
 #include <vector>
@@ -10,18 +10,25 @@
 namespace cvtmesh {
 
 struct Polytope {
-  std::vector<Vec3> pts;        // the faces' vertices, face after face
-  std::vector<int> face_start;  // #faces + 1 offsets into pts
+  std::vector<Vec3> vtx;        // vertices (each stored once)
+  std::vector<int> fv;          // the faces' vertex indices, face after face, counterclockwise
+                                // seen from outside
+  std::vector<int> face_start;  // #faces + 1 offsets into fv
   std::vector<int> face_id;     // who made the face: 0..3 = tet faces, >= 4 = clip planes
+  // Work arrays of the clipper (kept here to be reused).
+  std::vector<double> sd;
+  std::vector<int> remap, next;
+  std::vector<std::array<int, 3>> cut;  // (lower, upper, new vertex) of each edge cut
   int nb_faces() const { return static_cast<int>(face_id.size()); }
   void clear() {
-    pts.clear();
+    vtx.clear();
+    fv.clear();
     face_start.assign(1, 0);
     face_id.clear();
   }
 };
 
-// The tetrahedron p0..p3 as a polytope; face f (opposite vertex f) has id f.
+// The tetrahedron p0..p3 (positively oriented) as a polytope; face f (opposite vertex f) has id f.
 void tet_polytope(const double* p0, const double* p1, const double* p2, const double* p3,
                   Polytope& out);
 

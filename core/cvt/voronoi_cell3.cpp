@@ -1,12 +1,13 @@
 #include "core/cvt/voronoi_cell3.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <unordered_set>
 
 #include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/mesh/face_key.h"
-#include "core/mesh/locate_point.h"
 
 namespace cvtmesh {
 
@@ -70,12 +71,11 @@ void linear_density(const TetMesh& m, int t, const std::vector<double>& rho, con
 
 namespace {
 
-// The cell of v clipped by the bisectors of the generators `nbrs`; `hit` receives the tets where
-// the cell has a piece of positive volume.
-CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star,
-                             const std::vector<char>& constrained, int v, double eps,
-                             CellWorkspace& ws, const std::vector<double>* rho,
-                             const std::vector<int>& nbrs, std::vector<int>& hit) {
+// The cell of v clipped by the bisectors of `generators`; `hit` receives the tets where the cell
+// has a piece of positive volume.
+CellIntegrals integrate_cell(const TetMesh& m, const CellMesh& cm, int v, CellWorkspace& ws,
+                             const std::vector<double>* rho, const std::vector<int>& generators,
+                             std::vector<int>& hit) {
   CellIntegrals total;
   hit.clear();
   const int nt = m.nb_tets();
@@ -86,49 +86,62 @@ CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star,
     ws.stamp = 1;
   }
   const Vec3 z = vec3(m.point(v));
-  // Bisector half-spaces (x - mid).(w - z) <= 0.
-  std::vector<Vec3>& normals = ws.normals;
-  std::vector<double>& offsets = ws.offsets;
-  normals.clear();
-  offsets.clear();
-  for (int w : nbrs) {
-    const Vec3 pw = vec3(m.point(w));
-    const Vec3 n = pw - z;
-    normals.push_back(n);
-    offsets.push_back(0.5 * (dot(n, pw) + dot(n, z)));
+  // Bisector half-spaces n.(x - z) <= h with unit n = (w - z)/|w - z| and h = |w - z|/2, sorted
+  // by h: a piece whose points are all within h of z cannot be cut by this plane or any later one.
+  std::vector<PlaneRef>& planes = ws.planes;
+  planes.clear();
+  for (int w : generators) {
+    const Vec3 n = vec3(m.point(w)) - z;
+    const double len = norm(n);
+    if (!(len > 0)) continue;
+    planes.push_back({(1.0 / len) * n, 0.5 * len});
   }
+  std::sort(planes.begin(), planes.end(),
+            [](const PlaneRef& a, const PlaneRef& b) { return a.h < b.h; });
   ws.queue.clear();
-  for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {
-    const int t = star.tets[i];
-    ws.mark[t] = ws.stamp;
-    ws.queue.push_back(t);
+  for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it) {
+    ws.mark[*it] = ws.stamp;
+    ws.queue.push_back(*it);
   }
   for (std::size_t qi = 0; qi < ws.queue.size(); ++qi) {
     const int t = ws.queue[qi];
     const int* tv = &m.tets[4 * t];
+    // Work relative to z (the planes pass at distance h from the origin).
+    Vec3 q[4];
+    double reach2 = 0;  // max |x - z|^2 over the current piece
+    for (int k = 0; k < 4; ++k) {
+      q[k] = vec3(m.point(tv[k])) - z;
+      reach2 = std::max(reach2, norm2(q[k]));
+    }
     Polytope& p = ws.poly;
-    tet_polytope(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), p);
-    bool alive = true;
-    const Vec3 q[4] = {vec3(m.point(tv[0])), vec3(m.point(tv[1])), vec3(m.point(tv[2])),
-                       vec3(m.point(tv[3]))};
-    for (std::size_t k = 0; k < normals.size() && alive; ++k) {
-      // A plane that keeps the whole tet cannot cut the piece: skip it; one that keeps none of
-      // it empties the piece.
-      int in = 0, out = 0;
-      for (const Vec3& x : q) {
-        const double sd = dot(normals[k], x) - offsets[k];
-        in += sd <= 0;
-        out += sd > 0;
+    bool started = false, alive = true;
+    for (std::size_t k = 0; k < planes.size() && alive; ++k) {
+      const PlaneRef& pl = planes[k];
+      if (pl.h * pl.h >= reach2) break;
+      if (!started) {
+        int in = 0, out = 0;
+        for (const Vec3& x : q) {
+          const double sd = dot(pl.n, x) - pl.h;
+          in += sd <= 0;
+          out += sd > 0;
+        }
+        if (out == 0) continue;
+        if (in == 0) {
+          alive = false;
+          break;
+        }
+        tet_polytope(q[0].data(), q[1].data(), q[2].data(), q[3].data(), p);
+        started = true;
       }
-      if (out == 0) continue;
-      if (in == 0) {
-        alive = false;
-        break;
+      alive = clip_polytope(p, pl.n, pl.h, 4, cm.eps, ws.scratch);
+      if (alive) {
+        reach2 = 0;
+        for (const Vec3& x : p.vtx) reach2 = std::max(reach2, norm2(x));
       }
-      alive = clip_polytope(p, normals[k], offsets[k], 4, eps, ws.scratch);
     }
     if (!alive) continue;
-    const Moments mt = polytope_moments(p, z);
+    if (!started) tet_polytope(q[0].data(), q[1].data(), q[2].data(), q[3].data(), p);
+    const Moments mt = polytope_moments(p, Vec3{0, 0, 0});
     if (mt.m0 <= 0) continue;
     hit.push_back(t);
     total.volume += mt.m0;
@@ -150,12 +163,12 @@ CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star,
     }
     // Continue through the faces of t that the clipped cell still touches.
     for (int f = 0; f < 4; ++f) {
-      if (constrained[4 * t + f]) continue;
+      if (cm.constrained[4 * t + f]) continue;
       const int o = m.adj[4 * t + f];
       if (o < 0) continue;
       const int t2 = o / 4;
       if (ws.mark[t2] == ws.stamp) continue;
-      if (face_area(p, f) <= eps * eps) continue;
+      if (face_area(p, f) <= cm.eps * cm.eps) continue;
       ws.mark[t2] = ws.stamp;
       ws.queue.push_back(t2);
     }
@@ -163,38 +176,52 @@ CellIntegrals integrate_cell(const TetMesh& m, const VertexStar& star,
   return total;
 }
 
-}  // namespace
-
-CellIntegrals restricted_voronoi_cell(const TetMesh& m, const VertexStar& star,
-                                      const std::vector<char>& constrained, int v, double eps,
-                                      CellWorkspace& ws, const std::vector<double>* rho) {
-  // First with the Delaunay neighbours; where the mesh is not Delaunay (a constrained mesh near
-  // its boundary) other generators can be nearer: redo the cell with every vertex of the tets it
-  // reached, so that the cells do not overlap.
-  std::vector<int> nbrs = vertex_neighbors(m, star, v);
-  std::vector<int> hit;
-  CellIntegrals c = integrate_cell(m, star, constrained, v, eps, ws, rho, nbrs, hit);
-  std::vector<int> more = nbrs;
-  for (int t : hit)
-    for (int k = 0; k < 4; ++k) {
-      const int w = m.tets[4 * t + k];
-      if (w != v) more.push_back(w);
-    }
-  std::sort(more.begin(), more.end());
-  more.erase(std::unique(more.begin(), more.end()), more.end());
-  if (more.size() == nbrs.size()) return c;
-  return integrate_cell(m, star, constrained, v, eps, ws, rho, more, hit);
+// Adds the vertices of tet t other than v to `out`.
+inline void add_tet_vertices(const TetMesh& m, int t, int v, std::vector<int>& out) {
+  for (int k = 0; k < 4; ++k) {
+    const int w = m.tets[4 * t + k];
+    if (w != v) out.push_back(w);
+  }
 }
 
-std::vector<double> tet_circumcenters(const TetMesh& m) {
-  std::vector<double> cc(3 * static_cast<std::size_t>(m.nb_tets()), 0.0);
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] < 0) continue;
-    const Vec3 c = tet_circumcenter(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
-    for (int d = 0; d < 3; ++d) cc[3 * t + d] = c[d];
+inline void sort_unique(std::vector<int>& a) {
+  std::sort(a.begin(), a.end());
+  a.erase(std::unique(a.begin(), a.end()), a.end());
+}
+
+}  // namespace
+
+CellIntegrals restricted_voronoi_cell(const TetMesh& m, const CellMesh& cm, int v,
+                                      CellWorkspace& ws, const std::vector<double>* rho) {
+  // Generators: the vertices of the star and of the tets across its unconstrained faces (the
+  // cell of a boundary vertex of a constrained mesh often reaches one tet beyond its star).
+  std::vector<int>& gens = ws.generators;
+  gens.clear();
+  for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it) {
+    const int t = *it;
+    add_tet_vertices(m, t, v, gens);
+    for (int f = 0; f < 4; ++f) {
+      const int o = m.adj[4 * t + f];
+      if (o >= 0 && !cm.constrained[4 * t + f]) add_tet_vertices(m, o / 4, v, gens);
+    }
   }
-  return cc;
+  sort_unique(gens);
+  CellIntegrals c;
+  // Until the cell reaches no tet with a vertex that is not a generator (bounded: the set grows).
+  for (int pass = 0; pass < 8; ++pass) {
+    c = integrate_cell(m, cm, v, ws, rho, gens, ws.hit);
+    ws.reached.clear();
+    for (int t : ws.hit) add_tet_vertices(m, t, v, ws.reached);
+    sort_unique(ws.reached);
+    const std::size_t before = gens.size();
+    std::vector<int> merged;
+    merged.reserve(gens.size() + ws.reached.size());
+    std::set_union(gens.begin(), gens.end(), ws.reached.begin(), ws.reached.end(),
+                   std::back_inserter(merged));
+    if (merged.size() == before) break;
+    gens.swap(merged);
+  }
+  return c;
 }
 
 namespace {
@@ -226,51 +253,34 @@ void add_signed_tet(const Vec3& a, const Vec3& b, const Vec3& c, double sign, do
 
 }  // namespace
 
-bool dual_voronoi_cell(const TetMesh& m, const VertexStar& star,
-                       const std::vector<char>& constrained, const std::vector<double>& cc, int v,
-                       const std::vector<double>* rho, CellIntegrals& out) {
+bool dual_voronoi_cell(const TetMesh& m, const CellMesh& cm, int v, const std::vector<double>* rho,
+                       CellIntegrals& out) {
   out = CellIntegrals{};
-  if (m.vclass[v].dim != 3) return false;
-  for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {
-    const int t = star.tets[i];
-    for (int f = 0; f < 4; ++f)
-      if (constrained[4 * t + f]) return false;
-    const LocateResult r = locate_point(m, &cc[3 * t], t, &constrained, 16);
-    if (r.status != LocateStatus::kInside) return false;
-    // The dual decomposition is exact only where the mesh is Delaunay: every neighbour's opposite
-    // vertex must be outside the circumsphere (a constrained mesh can break this near the
-    // boundary).
-    const int* tv = &m.tets[4 * t];
-    for (int f = 0; f < 4; ++f) {
-      const int o = m.adj[4 * t + f];
-      if (o < 0) continue;
-      const int opp = m.tets[4 * (o / 4) + o % 4];
-      if (insphere(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), m.point(opp)) >
-          0)
-        return false;
-    }
-  }
+  for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it)
+    if (!cm.dual_ok[*it]) return false;
   const Vec3 z = vec3(m.point(v));
-  for (int i = star.offset[v]; i < star.offset[v + 1]; ++i) {
-    const int t = star.tets[i];
+  for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it) {
+    const int t = *it;
     const int* tv = &m.tets[4 * t];
     int k = 0;
     while (tv[k] != v) ++k;
-    // (v, a, b, c) with the same orientation as the tet (an even permutation moving v first).
+    // (v, a, b, c) with the same orientation as the tet (an even permutation moving v first);
+    // local indices into the tet.
     static const int kRest[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-    const int a = tv[kRest[k][0]], b = tv[kRest[k][1]], c = tv[kRest[k][2]];
     double r0 = 1;
     Vec3 g{0, 0, 0};
     if (rho) linear_density(m, t, *rho, z, r0, g);
-    const Vec3 ct = Vec3{cc[3 * t], cc[3 * t + 1], cc[3 * t + 2]} - z;
-    const int ring[3] = {a, b, c};
+    const Vec3 ct = Vec3{cm.cc[3 * t], cm.cc[3 * t + 1], cm.cc[3 * t + 2]} - z;
+    const int* ring = kRest[k];
     for (int e = 0; e < 3; ++e) {
       const int w = ring[e], u1 = ring[(e + 1) % 3], u2 = ring[(e + 2) % 3];
-      const Vec3 me = 0.5 * (vec3(m.point(w)) - z);
-      // Face (v, w, u1) with fourth vertex u2: orientation of (v, w, u1, u2) is that of the tet
-      // for (a,b,c) cyclic; face (v, w, u2) with fourth u1 has the opposite orientation.
-      const Vec3 c1 = tri_circumcenter3d(m.point(v), m.point(w), m.point(u1)) - z;
-      const Vec3 c2 = tri_circumcenter3d(m.point(v), m.point(w), m.point(u2)) - z;
+      const Vec3 me = 0.5 * (vec3(m.point(tv[w])) - z);
+      // Face (v, w, u1) is the face opposite u2; orientation of (v, w, u1, u2) is that of the tet
+      // for (a,b,c) cyclic; face (v, w, u2), opposite u1, has the opposite orientation.
+      const double* f1 = &cm.face_cc[12 * t + 3 * u2];
+      const double* f2 = &cm.face_cc[12 * t + 3 * u1];
+      const Vec3 c1 = Vec3{f1[0], f1[1], f1[2]} - z;
+      const Vec3 c2 = Vec3{f2[0], f2[1], f2[2]} - z;
       add_signed_tet(me, c1, ct, +1.0, r0, g, out);
       add_signed_tet(me, c2, ct, -1.0, r0, g, out);
     }

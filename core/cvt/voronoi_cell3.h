@@ -5,17 +5,21 @@
 #pragma once
 #include <vector>
 
+#include "core/cvt/cell_mesh.h"
 #include "core/cvt/polytope_clip.h"
 #include "core/mesh/tet_mesh.h"
-#include "core/mesh/vertex_star.h"
 
 namespace cvtmesh {
 
+struct PlaneRef {
+  Vec3 n;    // unit normal
+  double h;  // distance of the plane from the cell's generator
+};
+
 struct CellWorkspace {
   Polytope poly, scratch;
-  std::vector<Vec3> normals;
-  std::vector<double> offsets;
-  std::vector<int> queue;
+  std::vector<PlaneRef> planes;  // bisector planes of the generators, nearest first
+  std::vector<int> queue, generators, hit, reached;
   std::vector<int> mark;  // #T, stamp of the last vertex that visited the tet
   int stamp = 0;
 };
@@ -32,22 +36,23 @@ struct CellIntegrals {
   // Mass centroid, z + moment / mass (z itself for an empty cell).
   Vec3 centroid(const double* z) const;
 };
-// `constrained`: 4*#T flags of faces not to cross. `eps`: length tolerance of the clipping.
-CellIntegrals restricted_voronoi_cell(const TetMesh& mesh, const VertexStar& star,
-                                      const std::vector<char>& constrained, int v, double eps,
+// The generators whose bisectors clip the cell are the vertices of v's star and of the tets
+// next to it; where the cell reaches tets with other vertices (a constrained mesh is not Delaunay
+// near its boundary), it is recomputed with those too, so that cells do not overlap.
+CellIntegrals restricted_voronoi_cell(const TetMesh& mesh, const CellMesh& cells, int v,
                                       CellWorkspace& ws, const std::vector<double>* rho = nullptr);
 
 // The same integrals from the Delaunay dual, without clipping: the cell of an interior vertex of a
 // (locally) Delaunay mesh is the convex hull of the circumcentres of its tets, decomposed into the
-// signed tets (v, mid(vw), cc(face), cc(tet)). Applies only when v is interior and every
-// circumcentre of its tets lies in the region (found by a short walk that crosses no constrained
-// face); returns false otherwise (use restricted_voronoi_cell). `cc`: 3*#T tet circumcentres.
-bool dual_voronoi_cell(const TetMesh& mesh, const VertexStar& star,
-                       const std::vector<char>& constrained, const std::vector<double>& cc, int v,
+// signed tets (v, mid(vw), cc(face), cc(tet)). Applies when every tet of v's star is
+// CellMesh::dual_ok; returns false otherwise (use restricted_voronoi_cell). For a vertex on the
+// boundary the pieces of its boundary faces lie in those faces' planes: the result is its cell
+// restricted by the boundary triangles' planes — the restricted cell where the boundary is flat
+// (tested to 1e-9 against clipping), within ~1e-4 of its volume on a curved polyhedral surface,
+// where only the energy of a fixed vertex's cell is used. The energy of each piece takes rho at
+// the piece's centroid: it differs from the clipped cell's by O(h |grad rho| / rho).
+bool dual_voronoi_cell(const TetMesh& mesh, const CellMesh& cells, int v,
                        const std::vector<double>* rho, CellIntegrals& out);
-
-// 3*#T circumcentres of the live tets.
-std::vector<double> tet_circumcenters(const TetMesh& mesh);
 
 // 4*#T flags: face f of tet t is a constrained triangle (boundary or interface).
 std::vector<char> constrained_face_flags(const TetMesh& mesh);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "core/geometry/predicates.h"
@@ -28,7 +29,10 @@ MeshCheck check_mesh(const TetMesh& m) {
     problem(r, "adjacency not built (adj size differs from 4*#T)");
     return r;
   }
-  std::unordered_set<FaceKey, FaceKeyHash> constrained;
+  // The constrained triangles, indexed; only a face whose three vertices are all on some
+  // constrained triangle can be one (no hashing of the other faces).
+  std::unordered_map<FaceKey, int, FaceKeyHash> constrained;
+  std::vector<char> on_constraint(nv, 0);
   for (int f = 0; f < m.nb_tris(); ++f) {
     const int* fv = &m.tris[3 * f];
     for (int k = 0; k < 3; ++k)
@@ -36,9 +40,16 @@ MeshCheck check_mesh(const TetMesh& m) {
         problem(r, "triangle " + std::to_string(f) + " has a vertex id out of range");
         return r;
       }
-    constrained.insert(face_key(fv[0], fv[1], fv[2]));
+    constrained.emplace(face_key(fv[0], fv[1], fv[2]), static_cast<int>(constrained.size()));
+    for (int k = 0; k < 3; ++k) on_constraint[fv[k]] = 1;
   }
-  std::unordered_set<FaceKey, FaceKeyHash> seen_faces;
+  std::vector<char> found(constrained.size(), 0);
+  auto constraint_of = [&](const int* tv, int f) {
+    const int a = tv[kTetFace[f][0]], b = tv[kTetFace[f][1]], c = tv[kTetFace[f][2]];
+    if (!on_constraint[a] || !on_constraint[b] || !on_constraint[c]) return -1;
+    const auto it = constrained.find(face_key(a, b, c));
+    return it == constrained.end() ? -1 : it->second;
+  };
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     if (tv[0] < 0) continue;
@@ -54,11 +65,11 @@ MeshCheck check_mesh(const TetMesh& m) {
       problem(r, "tet " + std::to_string(t) + " is inverted or flat");
     }
     for (int f = 0; f < 4; ++f) {
-      const FaceKey key = face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]);
-      seen_faces.insert(key);
+      const int ci = constraint_of(tv, f);
+      if (ci >= 0) found[ci] = 1;
       const int o = m.adj[4 * t + f];
       if (o < 0) {
-        if (!constrained.count(key)) {
+        if (ci < 0) {
           ++r.nb_open_faces;
           problem(r, "boundary face of tet " + std::to_string(t) +
                          " is not a boundary triangle (boundary not closed)");
@@ -66,27 +77,28 @@ MeshCheck check_mesh(const TetMesh& m) {
         continue;
       }
       const int t2 = o / 4, f2 = o % 4;
-      if (t2 >= nt || m.tets[4 * t2] < 0 || m.adj[o] != 4 * t + f) {
+      if (o >= 4 * nt || m.tets[4 * t2] < 0 || m.adj[o] != 4 * t + f) {
         ++r.nb_bad_adjacency;
         problem(r, "adjacency of tet " + std::to_string(t) + " face " + std::to_string(f) +
                        " is not symmetric or points to a dead tet");
         continue;
       }
       const int* tv2 = &m.tets[4 * t2];
-      if (face_key(tv2[kTetFace[f2][0]], tv2[kTetFace[f2][1]], tv2[kTetFace[f2][2]]) != key) {
+      if (face_key(tv2[kTetFace[f2][0]], tv2[kTetFace[f2][1]], tv2[kTetFace[f2][2]]) !=
+          face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]])) {
         ++r.nb_bad_adjacency;
         problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
                        " are adjacent but do not share the face");
       }
-      if (m.tet_region[t] != m.tet_region[t2] && !constrained.count(key)) {
+      if (m.tet_region[t] != m.tet_region[t2] && ci < 0) {
         ++r.nb_open_faces;
         problem(r, "interface between regions " + std::to_string(m.tet_region[t]) + " and " +
                        std::to_string(m.tet_region[t2]) + " is not a constrained triangle");
       }
     }
   }
-  for (const FaceKey& k : constrained)
-    if (!seen_faces.count(k)) {
+  for (const auto& [k, i] : constrained)
+    if (!found[i]) {
       ++r.nb_dangling_constraints;
       problem(r, "boundary triangle (" + std::to_string(k[0]) + "," + std::to_string(k[1]) + "," +
                      std::to_string(k[2]) + ") is not a face of any tet");

@@ -55,8 +55,22 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.anderson_depth = o.anderson_depth;
   lo.sizing = sizing3(mesh, o);
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
-    if (o.progress)
-      report(o, "lloyd", s.iteration, s.D, s.energy, quality_stats(mesh, ""), s.restarted);
+    if (!o.progress) return;
+    OptimizeProgress p;
+    p.phase = "lloyd";
+    p.iteration = s.iteration;
+    p.D = s.D;
+    p.energy = s.energy;
+    const QualityStats q = quality_stats(mesh, "");
+    p.q_min = q.q_min;
+    p.q_avg = q.q_avg;
+    p.restarted = s.restarted;
+    p.seconds_cells = s.seconds_cells;
+    p.seconds_delaunay = s.seconds_delaunay;
+    p.seconds_other = s.seconds_move + s.seconds_check;
+    p.nb_dual_cells = s.nb_dual_cells;
+    p.nb_clipped_cells = s.nb_clipped_cells;
+    o.progress(p);
   });
   r.iterations = lr.iterations;
   r.converged = lr.converged;

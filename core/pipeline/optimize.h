@@ -19,6 +19,10 @@ struct OptimizeProgress {
   double energy = 0;  // CVT energy, 0 if not applicable
   double q_min = 0, q_avg = 0;
   bool restarted = false;  // an accelerated Lloyd step was undone (energy rose)
+  // Lloyd (3D): wall seconds of this iteration's cells and Delaunay rebuild, and how many cells
+  // came from the exact Delaunay dual vs clipping.
+  double seconds_cells = 0, seconds_delaunay = 0, seconds_other = 0;
+  int nb_dual_cells = 0, nb_clipped_cells = 0;
 };
 
 struct OptimizeOptions {

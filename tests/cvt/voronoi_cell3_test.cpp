@@ -16,12 +16,10 @@ namespace {
 TEST(VoronoiCell3, RestrictedCellsPartitionTheDomain) {
   MeshData d = testing::cube_sphere(0.15, 0.12);
   const TetMesh& m = d.tet;
-  const VertexStar star = build_vertex_star(m);
-  const auto cf = constrained_face_flags(m);
+  const CellMesh cm = prepare_cell_mesh(m);
   CellWorkspace ws;
   double total = 0;
-  for (int v = 0; v < m.nb_vertices(); ++v)
-    total += restricted_voronoi_cell(m, star, cf, v, 1e-12, ws).volume;
+  for (int v = 0; v < m.nb_vertices(); ++v) total += restricted_voronoi_cell(m, cm, v, ws).volume;
   const double vol = region_volumes(m)[0].second;
   EXPECT_NEAR(total, vol, 1e-3 * vol);
 }
@@ -37,9 +35,7 @@ TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
   // Gmsh's optimizer leaves non-Delaunay faces: rebuild the constrained Delaunay mesh first.
   Delaunay3::create("tetgen")->retetrahedralize(d.tet);
   const TetMesh& m = d.tet;
-  const VertexStar star = build_vertex_star(m);
-  const auto cf = constrained_face_flags(m);
-  const auto cc = tet_circumcenters(m);
+  const CellMesh cm = prepare_cell_mesh(m);
   std::vector<double> rho(m.nb_vertices());
   for (int v = 0; v < m.nb_vertices(); ++v)
     rho[v] = 1.0 + m.point(v)[0] + 2 * m.point(v)[2];  // linear density
@@ -47,8 +43,8 @@ TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
   int compared = 0;
   for (int v = 0; v < m.nb_vertices(); ++v) {
     CellIntegrals dual;
-    if (!dual_voronoi_cell(m, star, cf, cc, v, &rho, dual)) continue;
-    const CellIntegrals clip = restricted_voronoi_cell(m, star, cf, v, 1e-12, ws, &rho);
+    if (!dual_voronoi_cell(m, cm, v, &rho, dual)) continue;
+    const CellIntegrals clip = restricted_voronoi_cell(m, cm, v, ws, &rho);
     ++compared;
     EXPECT_NEAR(dual.volume, clip.volume, 1e-9 * clip.volume) << v;
     EXPECT_NEAR(dual.mass, clip.mass, 1e-9 * clip.mass) << v;

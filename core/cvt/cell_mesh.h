@@ -1,0 +1,31 @@
+// What the restricted Voronoi cells of one mesh configuration share, computed once per Lloyd
+// iteration (per tet, in parallel) instead of once per vertex: the stars, the constrained faces,
+// the tet and face circumcentres, and which tets the exact dual decomposition may use.
+#pragma once
+#include <vector>
+
+#include "core/mesh/tet_mesh.h"
+#include "core/mesh/vertex_star.h"
+
+namespace cvtmesh {
+
+struct CellMesh {
+  VertexStar star;
+  std::vector<char> constrained;  // 4*#T: face f of tet t is a boundary or interface triangle
+  std::vector<double> cc;         // 3*#T: tet circumcentres
+  std::vector<double> face_cc;    // 12*#T: circumcentre of face f (opposite vertex f) of tet t
+  // #T: t is locally Delaunay (no neighbour's opposite vertex strictly inside its circumsphere,
+  // exact insphere) and its circumcentre lies in its region (reached by a short walk that crosses
+  // no constrained face). A free vertex whose star tets are all dual_ok has the convex hull of
+  // their circumcentres as its Voronoi cell; for a vertex on the boundary, the same decomposition
+  // gives its cell cut by the planes of its boundary triangles (see dual_voronoi_cell).
+  std::vector<char> dual_ok;
+  double eps = 0;  // length tolerance of the clipping (relative to the coordinates)
+};
+
+CellMesh prepare_cell_mesh(const TetMesh& mesh);
+
+// 1e-12 times the largest absolute coordinate (at least 1e-12).
+double coordinate_eps(const TetMesh& mesh);
+
+}  // namespace cvtmesh
