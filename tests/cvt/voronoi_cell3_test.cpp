@@ -56,3 +56,41 @@ TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// Boundary vertices take the dual too: exact on the flat cube faces, edges and corners; within
+// 1e-3 of the clipped volume on the polyhedral ball (a curved, non-convex part of the boundary).
+TEST(VoronoiCell3, DualDecompositionOfBoundaryVertices) {
+  MeshData d = testing::cube_sphere(0.09, 0.07, /*gmsh_optimize=*/true);
+  Delaunay3::create("tetgen")->retetrahedralize(d.tet);
+  const TetMesh& m = d.tet;
+  const CellMesh cm = prepare_cell_mesh(m);
+  CellWorkspace ws;
+  int flat = 0, ball = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    if (m.vclass[v].dim == 3) continue;
+    CellIntegrals dual;
+    if (!dual_voronoi_cell(m, cm, v, nullptr, dual)) continue;
+    const CellIntegrals clip = restricted_voronoi_cell(m, cm, v, ws);
+    const double* z = m.point(v);
+    const bool on_cube = std::fabs(z[0] - 0.5) > 0.499 || std::fabs(z[1] - 0.5) > 0.499 ||
+                         std::fabs(z[2] - 0.5) > 0.499;
+    if (on_cube) {
+      ++flat;
+      EXPECT_NEAR(dual.volume, clip.volume, 1e-9 * clip.volume) << v;
+      EXPECT_NEAR(dual.energy, clip.energy, 1e-9 * clip.energy) << v;
+      const Vec3 a = dual.centroid(z), b = clip.centroid(z);
+      EXPECT_NEAR(std::sqrt(norm2(a - b)), 0.0, 1e-9) << v;
+    } else {
+      ++ball;
+      EXPECT_NEAR(dual.volume, clip.volume, 1e-3 * clip.volume) << v;
+    }
+  }
+  EXPECT_GT(flat, 500);
+  EXPECT_GT(ball, 150);
+}
+
+}  // namespace
+}  // namespace cvtmesh
