@@ -52,9 +52,12 @@ void register_optimize(CLI::App& app) {
                           p.phase.c_str(), p.iteration, p.restarted ? "*" : " ", p.D, p.energy,
                           p.q_min, p.q_avg);
              if (p.nb_dual_cells + p.nb_clipped_cells > 0)
-               std::fprintf(stderr, "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs, %.2fs]",
+               std::fprintf(stderr,
+                            "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs (%s %d flips), "
+                            "%.2fs]",
                             p.seconds_cells, p.nb_dual_cells, p.nb_clipped_cells,
-                            p.seconds_delaunay, p.seconds_other);
+                            p.seconds_delaunay, p.rebuilt ? "rebuilt," : "", p.nb_flips,
+                            p.seconds_other);
              std::fprintf(stderr, "\n");
            };
          const OptimizeResult r = optimize(d, *opt);

@@ -27,6 +27,9 @@ struct LloydStep {
   // cells were computed (3D: exact Delaunay dual vs clipped by the bisectors).
   double seconds_cells = 0, seconds_move = 0, seconds_delaunay = 0, seconds_check = 0;
   int nb_dual_cells = 0, nb_clipped_cells = 0;
+  // 3D re-insertion: flips that restored the Delaunay property, or a full rebuild.
+  int nb_flips = 0;
+  bool rebuilt = false;
 };
 
 struct LloydResult {

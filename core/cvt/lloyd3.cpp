@@ -9,6 +9,7 @@
 #include "core/cvt/cell_mesh.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/delaunay/delaunay3.h"
+#include "core/delaunay/relocate_vertices3.h"
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/locate_point.h"
 #include "core/mesh/vertex_star.h"
@@ -79,6 +80,7 @@ class Lloyd3Problem {
       sizing_ = std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
     hints_.assign(m_.nb_vertices(), -1);
     mixer_ = AndersonMixer(o_.anderson_depth);
+    constrained_set_ = constrained_faces(m_);
   }
 
   LloydStep step() {
@@ -145,9 +147,8 @@ class Lloyd3Problem {
       target = accepted_xyz_;
       for (std::size_t i = 0; i < accepted_free_.size(); ++i)
         for (int d = 0; d < 3; ++d) target[3 * accepted_free_[i] + d] = accepted_plain_[3 * i + d];
-      m_.xyz = accepted_xyz_;
-      // The mesh of accepted_xyz_ is gone: the move safeguards ran when the plain targets were
-      // computed, on that mesh.
+      // The mesh of accepted_xyz_ is gone (the move safeguards ran when the plain targets were
+      // computed, on that mesh): the current, valid mesh moves to the targets.
     } else {
       // Plain relaxed Lloyd targets (kept for a restart), then the accelerated ones.
       std::vector<double> plain(z_free.size());
@@ -177,12 +178,21 @@ class Lloyd3Problem {
         for (int d = 0; d < 3; ++d) target[3 * free_ids[i] + d] = next[3 * i + d];
     }
     // Move and re-triangulate.
-    m_.xyz = target;
     s.seconds_move = seconds_since(t0) - s.seconds_cells;
     const auto t1 = Clock::now();
-    const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
+    bool restored = false;
+    if (o_.local_flips) {
+      const RelocateStats rs = relocate_vertices(m_, constrained_set_, target);
+      s.nb_flips = rs.nb_flips;
+      restored = rs.ok;
+    }
+    if (!restored) {
+      m_.xyz = target;
+      const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
+      nb_steiner_ += ds.nb_steiner;
+      s.rebuilt = true;
+    }
     s.seconds_delaunay = seconds_since(t1);
-    nb_steiner_ += ds.nb_steiner;
     const auto t2 = Clock::now();
     verify_after_step();
     s.seconds_check = seconds_since(t2);
@@ -233,6 +243,7 @@ class Lloyd3Problem {
   TetMesh& m_;
   Lloyd3Options o_;
   std::unique_ptr<Delaunay3> delaunay_;
+  ConstrainedFaces constrained_set_;  // the constrained triangles never change
   std::shared_ptr<const SizingField3> sizing_;
   std::vector<int> hints_;
   std::vector<double> H_, rho_;

@@ -30,6 +30,10 @@ struct Lloyd3Options {
   // Anderson acceleration depth (0 = plain Lloyd). An accelerated step that raises the energy is
   // undone and replaced by the plain step, so the accepted energies never increase.
   int anderson_depth = 0;
+  // Re-insertion: restore the constrained Delaunay property by exact Lawson flips on the current
+  // mesh after the move (restore_delaunay3.h); rebuild with the backend only when a moved vertex
+  // inverted a tet or a non-Delaunay face cannot be flipped. false: always rebuild.
+  bool local_flips = true;
 };
 
 // Runs the iteration on `mesh` (valid on entry; valid, with the same constrained triangles, on

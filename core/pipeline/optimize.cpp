@@ -70,6 +70,8 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
     p.seconds_other = s.seconds_move + s.seconds_check;
     p.nb_dual_cells = s.nb_dual_cells;
     p.nb_clipped_cells = s.nb_clipped_cells;
+    p.nb_flips = s.nb_flips;
+    p.rebuilt = s.rebuilt;
     o.progress(p);
   });
   r.iterations = lr.iterations;

@@ -23,6 +23,8 @@ struct OptimizeProgress {
   // came from the exact Delaunay dual vs clipping.
   double seconds_cells = 0, seconds_delaunay = 0, seconds_other = 0;
   int nb_dual_cells = 0, nb_clipped_cells = 0;
+  int nb_flips = 0;      // Delaunay restored by this many flips...
+  bool rebuilt = false;  // ...or the tetrahedralization rebuilt
 };
 
 struct OptimizeOptions {

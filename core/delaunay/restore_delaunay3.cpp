@@ -1,0 +1,98 @@
+#include "core/delaunay/restore_delaunay3.h"
+
+#include <vector>
+
+#include "core/geometry/predicates.h"
+#include "core/swap/apply_swap.h"
+#include "core/swap/compact_tets.h"
+#include "core/swap/flip23.h"
+#include "core/swap/flip32.h"
+
+namespace cvtmesh {
+namespace {
+
+// Face f of live tet t is unconstrained and the vertex behind it is strictly inside t's
+// circumsphere.
+bool non_delaunay(const TetMesh& m, const ConstrainedFaces& cf, int t, int f) {
+  const int o = m.adj[4 * t + f];
+  if (o < 0) return false;
+  const int* tv = &m.tets[4 * t];
+  const int e = m.tets[4 * (o / 4) + o % 4];
+  if (insphere(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), m.point(e)) <= 0)
+    return false;
+  return !cf.count(face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]));
+}
+
+}  // namespace
+
+RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFaces& cf) {
+  RestoreDelaunayStats st;
+  const int nt = m.nb_tets();
+  for (int t = 0; t < nt; ++t) {
+    const int* v = &m.tets[4 * t];
+    if (v[0] >= 0 && orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0) {
+      st.inverted = true;
+      return st;
+    }
+  }
+  // Work stack of (tet, face); entries are re-checked when popped (slots get reused).
+  std::vector<std::pair<int, int>> stack;
+  for (int t = 0; t < nt; ++t)
+    if (m.tets[4 * t] >= 0)
+      for (int f = 0; f < 4; ++f)
+        if (m.adj[4 * t + f] > 4 * t + f && non_delaunay(m, cf, t, f)) stack.push_back({t, f});
+  std::vector<int> free_slots;
+  std::vector<std::pair<int, int>> stuck;
+  auto push_tets = [&](const std::vector<int>& ids) {
+    for (int id : ids)
+      for (int f = 0; f < 4; ++f) stack.push_back({id, f});
+  };
+  // Each flip lowers the lifted triangulation strictly, so the loop ends; the cap guards against
+  // a bug, not against the algorithm. Faces no flip could remove are retried after the others
+  // (a flip elsewhere can make their reflex edge removable), while that makes progress.
+  long budget = 50L * nt + 1000;
+  for (int round = 0; round < 8; ++round) {
+    const int flips_before = st.nb_flips23 + st.nb_flips32;
+    while (!stack.empty() && budget-- > 0) {
+      const auto [t, f] = stack.back();
+      stack.pop_back();
+      if (m.tets[4 * t] < 0 || !non_delaunay(m, cf, t, f)) continue;
+      SwapPlan plan = plan_flip23(m, cf, t, f);
+      if (plan.status == SwapStatus::kOk) {
+        apply_swap(m, plan, &free_slots);
+        ++st.nb_flips23;
+        push_tets(plan.new_ids);
+        continue;
+      }
+      if (plan.status != SwapStatus::kNotConvex) {
+        stuck.push_back({t, f});
+        continue;
+      }
+      // The union of the two tets is not convex across the face: remove the reflex edge of the
+      // face if exactly three tets surround it (3-2 flip).
+      bool done = false;
+      for (int e = 0; e < 6 && !done; ++e) {
+        // The edges of face f are those not incident to local vertex f.
+        if (kTetEdge[e][0] == f || kTetEdge[e][1] == f) continue;
+        SwapPlan p32 = plan_flip32(m, cf, t, e);
+        if (p32.status != SwapStatus::kOk) continue;
+        apply_swap(m, p32, &free_slots);
+        ++st.nb_flips32;
+        push_tets(p32.new_ids);
+        done = true;
+      }
+      if (!done) stuck.push_back({t, f});
+    }
+    if (stuck.empty() || st.nb_flips23 + st.nb_flips32 == flips_before || budget <= 0) break;
+    stack.swap(stuck);
+    stuck.clear();
+  }
+  for (const auto& [t, f] : stuck)
+    if (m.tets[4 * t] >= 0 && non_delaunay(m, cf, t, f)) ++st.nb_stuck;
+  if (!stack.empty()) ++st.nb_stuck;
+  if (!free_slots.empty()) compact_tets(m);
+  st.ok = st.nb_stuck == 0;
+  return st;
+}
+
+}  // namespace cvtmesh
