@@ -16,36 +16,57 @@ double coordinate_eps(const TetMesh& m) {
   return 1e-12 * std::max(1.0, emax);
 }
 
-CellMesh prepare_cell_mesh(const TetMesh& m) {
+namespace {
+
+// The gradient of the linear interpolant of rho over tet t.
+void density_gradient(const TetMesh& m, int t, const std::vector<double>& rho, double* g) {
+  const int* v = &m.tets[4 * t];
+  const double* p0 = m.point(v[0]);
+  double E[3][3], r[3];
+  for (int k = 0; k < 3; ++k) {
+    const double* pk = m.point(v[k + 1]);
+    for (int d = 0; d < 3; ++d) E[k][d] = pk[d] - p0[d];
+    r[k] = rho[v[k + 1]] - rho[v[0]];
+  }
+  const Vec3 c0 = cross(Vec3{E[1][0], E[1][1], E[1][2]}, Vec3{E[2][0], E[2][1], E[2][2]});
+  const Vec3 c1 = cross(Vec3{E[2][0], E[2][1], E[2][2]}, Vec3{E[0][0], E[0][1], E[0][2]});
+  const Vec3 c2 = cross(Vec3{E[0][0], E[0][1], E[0][2]}, Vec3{E[1][0], E[1][1], E[1][2]});
+  const double det = E[0][0] * c0[0] + E[0][1] * c0[1] + E[0][2] * c0[2];
+  // E g = r  =>  g = (r0 c0 + r1 c1 + r2 c2) / det (the columns of E^-1 are c_k / det).
+  for (int d = 0; d < 3; ++d)
+    g[d] = det == 0 ? 0.0 : (r[0] * c0[d] + r[1] * c1[d] + r[2] * c2[d]) / det;
+}
+
+}  // namespace
+
+CellMesh prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
+                           bool unconstrained_delaunay) {
   CellMesh c;
   c.star = build_vertex_star(m);
   c.constrained = constrained_face_flags(m);
   c.eps = coordinate_eps(m);
   const int nt = m.nb_tets();
-  c.cc.assign(3 * static_cast<std::size_t>(nt), 0.0);
-  c.face_cc.assign(12 * static_cast<std::size_t>(nt), 0.0);
   c.dual_ok.assign(nt, 0);
+  c.dual_piece.assign(24 * static_cast<std::size_t>(nt), 0.0);
+  if (rho) c.rho_grad.assign(3 * static_cast<std::size_t>(nt), 0.0);
 #pragma omp parallel for schedule(static, 256)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     if (tv[0] < 0) continue;
     const double* p[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
     const Vec3 ct = tet_circumcenter(p[0], p[1], p[2], p[3]);
-    for (int d = 0; d < 3; ++d) c.cc[3 * t + d] = ct[d];
-    for (int f = 0; f < 4; ++f) {
-      const Vec3 fc = tri_circumcenter3d(p[kTetFace[f][0]], p[kTetFace[f][1]], p[kTetFace[f][2]]);
-      for (int d = 0; d < 3; ++d) c.face_cc[12 * t + 3 * f + d] = fc[d];
-    }
+    if (rho) density_gradient(m, t, *rho, &c.rho_grad[3 * t]);
     bool ok = true;
     for (int f = 0; f < 4 && ok; ++f) {
       const int o = m.adj[4 * t + f];
-      if (o < 0) continue;
+      if (o < 0 || (unconstrained_delaunay && !c.constrained[4 * t + f])) continue;
       const int opp = m.tets[4 * (o / 4) + o % 4];
       ok = insphere(p[0], p[1], p[2], p[3], m.point(opp)) <= 0;
     }
-    if (ok)
-      ok = locate_point(m, &c.cc[3 * t], t, &c.constrained, 16).status == LocateStatus::kInside;
+    if (ok) ok = locate_point(m, ct.data(), t, &c.constrained, 16).status == LocateStatus::kInside;
     c.dual_ok[t] = ok;
+    if (ok)
+      dual_tet_pieces(m, t, ct, rho, rho ? &c.rho_grad[3 * t] : nullptr, &c.dual_piece[24 * t]);
   }
   return c;
 }

@@ -12,8 +12,6 @@ namespace cvtmesh {
 struct CellMesh {
   VertexStar star;
   std::vector<char> constrained;  // 4*#T: face f of tet t is a boundary or interface triangle
-  std::vector<double> cc;         // 3*#T: tet circumcentres
-  std::vector<double> face_cc;    // 12*#T: circumcentre of face f (opposite vertex f) of tet t
   // #T: t is locally Delaunay (no neighbour's opposite vertex strictly inside its circumsphere,
   // exact insphere) and its circumcentre lies in its region (reached by a short walk that crosses
   // no constrained face). A free vertex whose star tets are all dual_ok has the convex hull of
@@ -21,9 +19,19 @@ struct CellMesh {
   // gives its cell cut by the planes of its boundary triangles (see dual_voronoi_cell).
   std::vector<char> dual_ok;
   double eps = 0;  // length tolerance of the clipping (relative to the coordinates)
+  // 3*#T: gradient in each tet of the P1 density (when prepared with one).
+  std::vector<double> rho_grad;
+  // 24*#T: for each dual_ok tet and local vertex k, the integrals (volume, mass, moment x/y/z,
+  // energy; relative to that vertex) of the part of the vertex's Voronoi cell dual to the tet
+  // (dual_tet_pieces). Computed tet by tet, while the tet's data is in cache.
+  std::vector<double> dual_piece;
 };
 
-CellMesh prepare_cell_mesh(const TetMesh& mesh);
+// `rho`: per-vertex density values (optional; uniform density 1 if null). `unconstrained_delaunay`:
+// the caller knows that every unconstrained face is locally Delaunay (restored by flips), so only
+// faces with a constraint are tested.
+CellMesh prepare_cell_mesh(const TetMesh& mesh, const std::vector<double>* rho = nullptr,
+                           bool unconstrained_delaunay = false);
 
 // 1e-12 times the largest absolute coordinate (at least 1e-12).
 double coordinate_eps(const TetMesh& mesh);

@@ -45,12 +45,12 @@ CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizi
   const int nv = mesh.nb_vertices();
   c.centroid.assign(3 * static_cast<std::size_t>(nv), 0);
   c.mass.assign(nv, 0);
-  const CellMesh cm = prepare_cell_mesh(mesh);
-  CellWorkspace ws;
   std::vector<int> local_hints;
   if (!hints) hints = &local_hints;
   std::vector<double> H, rho;
   vertex_density(mesh, sizing, *hints, H, rho);
+  const CellMesh cm = prepare_cell_mesh(mesh, &rho);
+  CellWorkspace ws;
   for (int v = 0; v < nv; ++v) {
     const double* z = mesh.point(v);
     if (cm.star.nb_tets_of(v) == 0) {
@@ -58,8 +58,7 @@ CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizi
       continue;
     }
     CellIntegrals ci;
-    if (!dual_voronoi_cell(mesh, cm, v, &rho, ci))
-      ci = restricted_voronoi_cell(mesh, cm, v, ws, &rho);
+    if (!dual_voronoi_cell(mesh, cm, v, ci)) ci = restricted_voronoi_cell(mesh, cm, v, ws, &rho);
     const Vec3 x = ci.centroid(z);
     for (int d = 0; d < 3; ++d) c.centroid[3 * v + d] = x[d];
     c.mass[v] = ci.mass;
@@ -87,10 +86,10 @@ class Lloyd3Problem {
     LloydStep s;
     const int nv = m_.nb_vertices();
     const auto t0 = Clock::now();
-    const CellMesh cm = prepare_cell_mesh(m_);
+    vertex_density(m_, *sizing_, hints_, H_, rho_);
+    const CellMesh cm = prepare_cell_mesh(m_, &rho_, delaunay_known_);
     const VertexStar& star = cm.star;
     const std::vector<char>& constrained = cm.constrained;
-    vertex_density(m_, *sizing_, hints_, H_, rho_);
     // Cells of the current configuration: energy, centroids of the free vertices, D. The cells are
     // independent: computed in parallel into per-vertex slots, then reduced in vertex order (the
     // result does not depend on the number of threads).
@@ -106,7 +105,7 @@ class Lloyd3Problem {
 #pragma omp for schedule(dynamic, 64)
       for (int v = 0; v < nv; ++v) {
         if (!wanted[v]) continue;
-        if (dual_voronoi_cell(m_, cm, v, &rho_, cells[v]))
+        if (dual_voronoi_cell(m_, cm, v, cells[v]))
           clipped[v] = 0;
         else
           cells[v] = restricted_voronoi_cell(m_, cm, v, local_ws, &rho_);
@@ -186,6 +185,9 @@ class Lloyd3Problem {
       s.nb_flips = rs.nb_flips;
       restored = rs.ok;
     }
+    // After flips every unconstrained face is locally Delaunay; TetGen's rebuild leaves a few
+    // non-Delaunay faces near the boundary.
+    delaunay_known_ = restored;
     if (!restored) {
       m_.xyz = target;
       const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
@@ -244,6 +246,7 @@ class Lloyd3Problem {
   Lloyd3Options o_;
   std::unique_ptr<Delaunay3> delaunay_;
   ConstrainedFaces constrained_set_;  // the constrained triangles never change
+  bool delaunay_known_ = false;       // every unconstrained face is locally Delaunay
   std::shared_ptr<const SizingField3> sizing_;
   std::vector<int> hints_;
   std::vector<double> H_, rho_;

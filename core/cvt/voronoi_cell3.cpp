@@ -12,18 +12,24 @@
 namespace cvtmesh {
 
 std::vector<char> constrained_face_flags(const TetMesh& m) {
+  // Only a face whose three vertices are on constrained triangles can be one: hash those only.
   std::unordered_set<FaceKey, FaceKeyHash> cf;
   cf.reserve(2 * m.tris.size() / 3 + 1);
-  for (int f = 0; f < m.nb_tris(); ++f)
-    cf.insert(face_key(m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]));
+  std::vector<char> on(m.nb_vertices(), 0);
+  for (int f = 0; f < m.nb_tris(); ++f) {
+    const int* v = &m.tris[3 * f];
+    cf.insert(face_key(v[0], v[1], v[2]));
+    on[v[0]] = on[v[1]] = on[v[2]] = 1;
+  }
   std::vector<char> flags(m.tets.size(), 0);
   for (int t = 0; t < m.nb_tets(); ++t) {
     const int* v = &m.tets[4 * t];
     if (v[0] < 0) continue;
-    for (int f = 0; f < 4; ++f)
+    for (int f = 0; f < 4; ++f) {
+      const int a = v[kTetFace[f][0]], b = v[kTetFace[f][1]], c = v[kTetFace[f][2]];
       flags[4 * t + f] =
-          m.adj[4 * t + f] < 0 ||
-          cf.count(face_key(v[kTetFace[f][0]], v[kTetFace[f][1]], v[kTetFace[f][2]])) > 0;
+          m.adj[4 * t + f] < 0 || (on[a] && on[b] && on[c] && cf.count(face_key(a, b, c)) > 0);
+    }
   }
   return flags;
 }
@@ -226,64 +232,75 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& m, const CellMesh& cm, int 
 
 namespace {
 
-// Adds the integrals of the signed tet (z, a, b, c) (coordinates relative to z), times sign.
+// Adds the integrals of the signed tet (z, a, b, c) (coordinates relative to z), times sign,
+// under the density r0 + g.(x - z): int x x^T over a tet = V/20 (sum p p^T + s s^T) with s the
+// vertex sum, so trace and (int x x^T) g need no 3x3 matrix.
 void add_signed_tet(const Vec3& a, const Vec3& b, const Vec3& c, double sign, double r0,
                     const Vec3& g, CellIntegrals& out) {
   const double vol = sign * dot(a, cross(b, c)) / 6.0;
   if (vol == 0) return;
   const Vec3 s = (a + b) + c;  // + z = 0
-  const Vec3 m1 = (vol / 4.0) * s;
-  double m2[9];
-  const Vec3* pts[3] = {&a, &b, &c};
-  for (int r = 0; r < 3; ++r)
-    for (int q = 0; q < 3; ++q) {
-      double acc = s[r] * s[q];
-      for (const Vec3* p : pts) acc += (*p)[r] * (*p)[q];
-      m2[3 * r + q] = vol / 20.0 * acc;
-    }
-  const double tr = m2[0] + m2[4] + m2[8];
+  const double w = vol / 20.0;
+  const double tr = w * (((norm2(s) + norm2(a)) + norm2(b)) + norm2(c));
+  const Vec3 m2g = w * ((dot(s, g) * s + dot(a, g) * a) + (dot(b, g) * b + dot(c, g) * c));
+  const double gs = dot(g, s);
   out.volume += vol;
-  out.mass += r0 * vol + dot(g, m1);
-  Vec3 mom = r0 * m1;
-  for (int r = 0; r < 3; ++r)
-    for (int q = 0; q < 3; ++q) mom[r] += m2[3 * r + q] * g[q];
-  out.moment = out.moment + mom;
-  out.energy += (r0 + dot(g, (1.0 / vol) * m1)) * tr;
+  out.mass += vol * (r0 + 0.25 * gs);
+  out.moment = out.moment + ((0.25 * vol * r0) * s + m2g);
+  out.energy += (r0 + 0.25 * gs) * tr;
 }
 
 }  // namespace
 
-bool dual_voronoi_cell(const TetMesh& m, const CellMesh& cm, int v, const std::vector<double>* rho,
-                       CellIntegrals& out) {
+void dual_tet_pieces(const TetMesh& m, int t, const Vec3& cc, const std::vector<double>* rho,
+                     const double* grad, double* out) {
+  const int* tv = &m.tets[4 * t];
+  const double* p[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
+  Vec3 fcc[4];
+  for (int f = 0; f < 4; ++f)
+    fcc[f] = tri_circumcenter3d(p[kTetFace[f][0]], p[kTetFace[f][1]], p[kTetFace[f][2]]);
+  const Vec3 g = grad ? Vec3{grad[0], grad[1], grad[2]} : Vec3{0, 0, 0};
+  // For local vertex k, (k, a, b, c) with the same orientation as the tet (an even permutation
+  // moving k first).
+  static const int kRest[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 z = vec3(p[k]);
+    const double r0 = rho ? (*rho)[tv[k]] : 1.0;
+    const Vec3 ct = cc - z;
+    CellIntegrals piece;
+    const int* ring = kRest[k];
+    for (int e = 0; e < 3; ++e) {
+      const int w = ring[e], u1 = ring[(e + 1) % 3], u2 = ring[(e + 2) % 3];
+      const Vec3 me = 0.5 * (vec3(p[w]) - z);
+      // Face (k, w, u1) is the face opposite u2; orientation of (k, w, u1, u2) is that of the tet
+      // for (a,b,c) cyclic; face (k, w, u2), opposite u1, has the opposite orientation.
+      add_signed_tet(me, fcc[u2] - z, ct, +1.0, r0, g, piece);
+      add_signed_tet(me, fcc[u1] - z, ct, -1.0, r0, g, piece);
+    }
+    double* o = out + 6 * k;
+    o[0] = piece.volume;
+    o[1] = piece.mass;
+    o[2] = piece.moment[0];
+    o[3] = piece.moment[1];
+    o[4] = piece.moment[2];
+    o[5] = piece.energy;
+  }
+}
+
+bool dual_voronoi_cell(const TetMesh& m, const CellMesh& cm, int v, CellIntegrals& out) {
   out = CellIntegrals{};
   for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it)
     if (!cm.dual_ok[*it]) return false;
-  const Vec3 z = vec3(m.point(v));
   for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it) {
     const int t = *it;
     const int* tv = &m.tets[4 * t];
     int k = 0;
     while (tv[k] != v) ++k;
-    // (v, a, b, c) with the same orientation as the tet (an even permutation moving v first);
-    // local indices into the tet.
-    static const int kRest[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-    double r0 = 1;
-    Vec3 g{0, 0, 0};
-    if (rho) linear_density(m, t, *rho, z, r0, g);
-    const Vec3 ct = Vec3{cm.cc[3 * t], cm.cc[3 * t + 1], cm.cc[3 * t + 2]} - z;
-    const int* ring = kRest[k];
-    for (int e = 0; e < 3; ++e) {
-      const int w = ring[e], u1 = ring[(e + 1) % 3], u2 = ring[(e + 2) % 3];
-      const Vec3 me = 0.5 * (vec3(m.point(tv[w])) - z);
-      // Face (v, w, u1) is the face opposite u2; orientation of (v, w, u1, u2) is that of the tet
-      // for (a,b,c) cyclic; face (v, w, u2), opposite u1, has the opposite orientation.
-      const double* f1 = &cm.face_cc[12 * t + 3 * u2];
-      const double* f2 = &cm.face_cc[12 * t + 3 * u1];
-      const Vec3 c1 = Vec3{f1[0], f1[1], f1[2]} - z;
-      const Vec3 c2 = Vec3{f2[0], f2[1], f2[2]} - z;
-      add_signed_tet(me, c1, ct, +1.0, r0, g, out);
-      add_signed_tet(me, c2, ct, -1.0, r0, g, out);
-    }
+    const double* o = &cm.dual_piece[24 * t + 6 * k];
+    out.volume += o[0];
+    out.mass += o[1];
+    out.moment = out.moment + Vec3{o[2], o[3], o[4]};
+    out.energy += o[5];
   }
   return out.volume > 0;
 }

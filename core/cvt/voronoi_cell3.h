@@ -51,8 +51,14 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& mesh, const CellMesh& cells
 // (tested to 1e-9 against clipping), within ~1e-4 of its volume on a curved polyhedral surface,
 // where only the energy of a fixed vertex's cell is used. The energy of each piece takes rho at
 // the piece's centroid: it differs from the clipped cell's by O(h |grad rho| / rho).
-bool dual_voronoi_cell(const TetMesh& mesh, const CellMesh& cells, int v,
-                       const std::vector<double>* rho, CellIntegrals& out);
+// The density is the one CellMesh was prepared with.
+bool dual_voronoi_cell(const TetMesh& mesh, const CellMesh& cells, int v, CellIntegrals& out);
+
+// The dual pieces of tet t with circumcentre cc (see CellMesh::dual_piece): for each local vertex
+// k, out[6k..6k+5] = volume, mass, moment (3), energy relative to vertex k, under the density
+// rho[vertex] + grad.(x - vertex) (uniform 1 if rho is null).
+void dual_tet_pieces(const TetMesh& mesh, int t, const Vec3& cc, const std::vector<double>* rho,
+                     const double* grad, double* out);
 
 // 4*#T flags: face f of tet t is a constrained triangle (boundary or interface).
 std::vector<char> constrained_face_flags(const TetMesh& mesh);

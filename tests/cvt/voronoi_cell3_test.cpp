@@ -35,15 +35,15 @@ TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
   // Gmsh's optimizer leaves non-Delaunay faces: rebuild the constrained Delaunay mesh first.
   Delaunay3::create("tetgen")->retetrahedralize(d.tet);
   const TetMesh& m = d.tet;
-  const CellMesh cm = prepare_cell_mesh(m);
   std::vector<double> rho(m.nb_vertices());
   for (int v = 0; v < m.nb_vertices(); ++v)
     rho[v] = 1.0 + m.point(v)[0] + 2 * m.point(v)[2];  // linear density
+  const CellMesh cm = prepare_cell_mesh(m, &rho);
   CellWorkspace ws;
   int compared = 0;
   for (int v = 0; v < m.nb_vertices(); ++v) {
     CellIntegrals dual;
-    if (!dual_voronoi_cell(m, cm, v, &rho, dual)) continue;
+    if (!dual_voronoi_cell(m, cm, v, dual)) continue;
     const CellIntegrals clip = restricted_voronoi_cell(m, cm, v, ws, &rho);
     ++compared;
     EXPECT_NEAR(dual.volume, clip.volume, 1e-9 * clip.volume) << v;
@@ -72,7 +72,7 @@ TEST(VoronoiCell3, DualDecompositionOfBoundaryVertices) {
   for (int v = 0; v < m.nb_vertices(); ++v) {
     if (m.vclass[v].dim == 3) continue;
     CellIntegrals dual;
-    if (!dual_voronoi_cell(m, cm, v, nullptr, dual)) continue;
+    if (!dual_voronoi_cell(m, cm, v, dual)) continue;
     const CellIntegrals clip = restricted_voronoi_cell(m, cm, v, ws);
     const double* z = m.point(v);
     const bool on_cube = std::fabs(z[0] - 0.5) > 0.499 || std::fabs(z[1] - 0.5) > 0.499 ||
