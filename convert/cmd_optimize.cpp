@@ -23,6 +23,11 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
   c->add_option("--relaxation", o.relaxation,
                 "Lloyd over-relaxation omega in (0,2); 1 = plain Lloyd")
       ->check(CLI::Range(0.05, 1.95));
+  c->add_option("--swap-below", o.swap_below,
+                "SWAP tries only tets with Q below this (default 0.7; inf: all tets)");
+  c->add_option("--polish-flip-below", o.polish_flip_below,
+                "the polish flips only tets with a dihedral angle below this many degrees "
+                "(default 45; inf: all tets)");
   c->add_option("--anderson", o.anderson_depth,
                 "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
       ->check(CLI::Range(0, 20));

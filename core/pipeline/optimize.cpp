@@ -82,6 +82,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
 void run_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   SwapOptions so;
   so.measure = Measure::kQ;
+  so.quality_threshold = o.swap_below;
   const SwapStats st = swap_slivers(mesh, so);
   r.iterations += st.passes;
   r.converged = true;
@@ -118,6 +119,7 @@ void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
   co.swap.guard_floor = o.polish_q_floor;
+  co.swap.quality_threshold = o.polish_flip_below;
   const CombinedStats st = combined_optimize(
       mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
   r.iterations = st.iterations;
