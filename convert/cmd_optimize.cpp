@@ -24,7 +24,7 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
                 "Lloyd over-relaxation omega in (0,2); 1 = plain Lloyd")
       ->check(CLI::Range(0.05, 1.95));
   c->add_option("--swap-below", o.swap_below,
-                "SWAP tries only tets with Q below this (default 0.7; inf: all tets)");
+                "SWAP tries only tets with Q below this (default: all tets)");
   c->add_option("--polish-flip-below", o.polish_flip_below,
                 "the polish flips only tets with a dihedral angle below this many degrees "
                 "(default 45; inf: all tets)");

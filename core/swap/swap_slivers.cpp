@@ -101,11 +101,24 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
     unsigned version;
   };
   std::vector<Entry> order;
+  // 1 + the pass in which a tet containing the vertex was last replaced or created (0: never).
+  // Every operation
+  // tried on a tet none of whose vertices changed since the previous pass was tried then, on the
+  // same cavity, and refused: such tets are not tried again (the same result, without the work).
+  std::vector<int> touched(mesh.nb_vertices(), 0);
+  auto touch = [&](int t, int pass) {
+    for (int k = 0; k < 4; ++k) touched[mesh.tets[4 * static_cast<std::size_t>(t) + k]] = pass;
+  };
   for (int pass = 0; pass < options.max_passes; ++pass) {
     order.clear();
-    for (int t = 0; t < mesh.nb_tets(); ++t)
-      if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0 && q[t] < options.quality_threshold)
-        order.push_back({q[t], t, version[t]});
+    for (int t = 0; t < mesh.nb_tets(); ++t) {
+      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      if (tv[0] < 0 || !(q[t] < options.quality_threshold)) continue;
+      if (pass > 0 && std::max(std::max(touched[tv[0]], touched[tv[1]]),
+                               std::max(touched[tv[2]], touched[tv[3]])) < pass)
+        continue;
+      order.push_back({q[t], t, version[t]});
+    }
     std::sort(order.begin(), order.end(),
               [](const Entry& a, const Entry& b) { return a.q != b.q ? a.q < b.q : a.t < b.t; });
     ++stats.passes;
@@ -164,7 +177,10 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       if (!have_best) continue;
 
       const std::size_t nb_old = best.old_tets.size(), nb_new = best.new_tets.size();
-      for (int o : best.old_tets) ++version[o];
+      for (int o : best.old_tets) {
+        ++version[o];
+        touch(o, pass + 1);
+      }
       apply_swap(mesh, best, &free_slots);
       if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
         q.resize(static_cast<std::size_t>(mesh.nb_tets()));
@@ -172,6 +188,7 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       }
       for (int id : best.new_ids) {
         ++version[id];
+        touch(id, pass + 1);
         q[id] = quality_of(mesh, id, measure);
       }
       ++nb_done;
