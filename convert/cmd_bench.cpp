@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "convert/cli_common.h"
+#include "core/delaunay/delaunay3.h"
 #include "core/delaunay/tetgen_optimize.h"
 #include "core/io/gmsh_optimizer.h"
 #include "core/pipeline/optimize.h"
@@ -30,6 +31,8 @@ struct Row {
   double seconds = 0, peak_mb = 0;
   int iterations = 0;
   double q_avg = 0, q_min = 0, min_dihedral = 0, bad_pct = 0;
+  double s_per_it = 0;         // Lloyd seconds per iteration (0: no Lloyd phase)
+  std::vector<double> energy;  // Lloyd energy before each iteration
   bool ok = false;
   std::string error;
 };
@@ -57,7 +60,8 @@ Row run_isolated(const std::string& input, const std::string& method,
       out.precision(17);
       out << "ok 1\nin " << r.nb_tets_in << "\nout " << r.nb_tets_out << "\nsec " << r.seconds
           << "\nit " << r.iterations << "\navg " << r.q_avg << "\nmin " << r.q_min << "\ndih "
-          << r.min_dihedral << "\nbad " << r.bad_pct << "\n";
+          << r.min_dihedral << "\nbad " << r.bad_pct << "\nspi " << r.s_per_it << "\n";
+      for (double e : r.energy) out << "energy " << e << "\n";
     } catch (const std::exception& e) {
       std::string msg = e.what();
       for (char& c : msg)
@@ -107,6 +111,10 @@ Row run_isolated(const std::string& input, const std::string& method,
       row.min_dihedral = v;
     else if (key == "bad")
       row.bad_pct = v;
+    else if (key == "spi")
+      row.s_per_it = v;
+    else if (key == "energy")
+      row.energy.push_back(v);
   }
   if (!WIFEXITED(status) && row.error.empty()) row.error = "crashed";
   return row;
@@ -129,6 +137,7 @@ struct BenchOpts {
   std::vector<double> sizes = {25000, 100000};
   bool femur = false;
   std::vector<std::string> methods = {"cvdt", "cvdt+swap", "cvdt+swap+smooth", "combined"};
+  bool plain = false;
 };
 
 }  // namespace
@@ -144,6 +153,9 @@ void register_bench(CLI::App& app) {
                 "target numbers of tets of the cube_sphere inputs (default 25000 100000)");
   c->add_flag("--femur", bo->femur, "also the femur (geo/femur.geo)");
   c->add_option("--methods", bo->methods, "our methods to run");
+  c->add_flag("--plain-lloyd", bo->plain,
+              "also plain Lloyd (the paper's step), and how many accelerated iterations reach its "
+              "final energy");
   c->add_option("--max-iterations", opt->max_iterations, "maximum Lloyd / outer iterations");
   c->add_option("--tolerance", opt->tolerance, "Lloyd tolerance");
   commands().push_back(
@@ -193,33 +205,91 @@ void register_bench(CLI::App& app) {
              r.iterations = 9;
              fill_quality(r, d.tet);
            }));
-           for (const auto& m : bo->methods)
-             rows.push_back(run_isolated(in.name, m + " on Init", [&](Row& r) {
+           // One constrained Delaunay tetrahedralization of the Init's points by TetGen: what a
+           // Lloyd iteration that rebuilt the mesh would pay for its re-insertion alone.
+           rows.push_back(run_isolated(in.name, "TetGen CDT of the Init's points", [&](Row& r) {
+             MeshData d = read_mesh(in.path, init_ro);
+             r.nb_tets_in = d.tet.nb_tets();
+             const auto t0 = Clock::now();
+             Delaunay3::create("tetgen")->retetrahedralize(d.tet);
+             r.seconds = since(t0);
+             r.iterations = 1;
+             fill_quality(r, d.tet);
+           }));
+           auto run_method = [&](const std::string& label, const std::string& m, double omega,
+                                 int anderson, int max_it = -1, double tol = -1) {
+             rows.push_back(run_isolated(in.name, label, [&](Row& r) {
                MeshData d = read_mesh(in.path, init_ro);
                r.nb_tets_in = d.tet.nb_tets();
                OptimizeOptions o = *opt;
                o.method = m;
                o.progress = nullptr;
+               if (omega > 0) o.relaxation = omega;
+               if (anderson >= 0) o.anderson_depth = anderson;
+               if (max_it >= 0) o.max_iterations = max_it;
+               if (tol >= 0) o.tolerance = tol;
                const OptimizeResult res = optimize(d, o);
                r.seconds = res.seconds;
                r.iterations = res.iterations;
+               r.energy = res.lloyd_energy;
+               if (!res.lloyd_energy.empty())
+                 r.s_per_it = res.seconds_lloyd / static_cast<double>(res.lloyd_energy.size());
                fill_quality(r, d.tet);
              }));
+           };
+           for (const auto& m : bo->methods) run_method(m + " on Init", m, -1, -1);
+           if (bo->plain) {
+             // Plain Lloyd to convergence, then the accelerated one for as many iterations
+             // without a stop (its D criterion differs), to see when it reaches that energy.
+             run_method("cvdt, plain Lloyd (omega 1, no Anderson)", "cvdt", 1.0, 0);
+             const int plain_its = rows.back().ok ? static_cast<int>(rows.back().energy.size()) : 0;
+             if (plain_its > 0)
+               run_method("cvdt, accelerated, as many iterations", "cvdt", -1, -1, plain_its, 0.0);
+           }
            std::cerr << "cvtmesh: bench " << in.name << " done\n";
          }
          std::printf(
-             "| input | method | tets in | tets out | seconds | peak MB | iterations | avg Q | "
-             "Q_min | min dihedral | bad %% |\n");
-         std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+             "| input | method | tets in | tets out | seconds | s / Lloyd it | peak MB | "
+             "iterations | avg Q | Q_min | min dihedral | bad %% |\n");
+         std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
          for (const auto& r : rows) {
            if (!r.ok) {
              std::printf("| %s | %s | failed: %s |||||||||\n", r.input.c_str(), r.method.c_str(),
                          r.error.c_str());
              continue;
            }
-           std::printf("| %s | %s | %ld | %ld | %.2f | %.0f | %d | %.4f | %.4f | %.2f | %.2f |\n",
-                       r.input.c_str(), r.method.c_str(), r.nb_tets_in, r.nb_tets_out, r.seconds,
-                       r.peak_mb, r.iterations, r.q_avg, r.q_min, r.min_dihedral, r.bad_pct);
+           char spi[32] = "-";
+           if (r.s_per_it > 0) std::snprintf(spi, sizeof spi, "%.3f", r.s_per_it);
+           std::printf(
+               "| %s | %s | %ld | %ld | %.2f | %s | %.0f | %d | %.4f | %.4f | %.2f | %.2f |\n",
+               r.input.c_str(), r.method.c_str(), r.nb_tets_in, r.nb_tets_out, r.seconds, spi,
+               r.peak_mb, r.iterations, r.q_avg, r.q_min, r.min_dihedral, r.bad_pct);
+         }
+         // Accelerated vs plain Lloyd: iterations to reach the plain run's final energy.
+         if (bo->plain) {
+           std::printf(
+               "\n| input | plain Lloyd: iterations, final energy | accelerated (cvdt): "
+               "iterations to reach it (1e-6 rel.) | ratio |\n|---|---|---|---:|\n");
+           for (const auto& p : rows) {
+             if (!p.ok || p.method.rfind("cvdt, plain", 0) != 0 || p.energy.empty()) continue;
+             const double target = p.energy.back() * (1 + 1e-6);
+             for (const auto& a : rows) {
+               if (!a.ok || a.input != p.input || a.method.rfind("cvdt, accelerated", 0) != 0)
+                 continue;
+               int reached = -1;
+               for (std::size_t i = 0; i < a.energy.size() && reached < 0; ++i)
+                 if (a.energy[i] <= target) reached = static_cast<int>(i) + 1;
+               char rs[64] = "not reached";
+               if (reached > 0) std::snprintf(rs, sizeof rs, "%d of %zu", reached, a.energy.size());
+               std::printf("| %s | %zu, %.9g | %s | %s |\n", p.input.c_str(), p.energy.size(),
+                           p.energy.back(), rs,
+                           reached > 0 ? std::to_string(static_cast<double>(reached) /
+                                                        static_cast<double>(p.energy.size()))
+                                             .substr(0, 5)
+                                             .c_str()
+                                       : "-");
+             }
+           }
          }
          return 0;
        }});

@@ -54,7 +54,11 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.relaxation = o.relaxation;
   lo.anderson_depth = o.anderson_depth;
   lo.sizing = sizing3(mesh, o);
+  const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
+    r.lloyd_energy.push_back(s.energy);
+    r.seconds_lloyd_delaunay += s.seconds_delaunay;
+    r.nb_lloyd_rebuilds += s.rebuilt;
     if (!o.progress) return;
     OptimizeProgress p;
     p.phase = "lloyd";
@@ -74,6 +78,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
     p.rebuilt = s.rebuilt;
     o.progress(p);
   });
+  r.seconds_lloyd = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.iterations = lr.iterations;
   r.converged = lr.converged;
 }

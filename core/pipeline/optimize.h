@@ -59,6 +59,10 @@ struct OptimizeResult {
   bool converged = false;
   double seconds = 0;
   std::string method;  // the method that ran (a 3D default name maps to "cvdt" in 2D)
+  // 3D Lloyd phase: the energy before each iteration's move, and where its time went.
+  std::vector<double> lloyd_energy;
+  double seconds_lloyd = 0, seconds_lloyd_delaunay = 0;
+  int nb_lloyd_rebuilds = 0;  // iterations that rebuilt the tetrahedralization (no flips)
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces
