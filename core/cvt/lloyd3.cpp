@@ -30,6 +30,7 @@ void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<in
   hints.resize(nv, -1);
   H.resize(nv);
   rho.resize(nv);
+#pragma omp parallel for schedule(static, 512) if (sizing.thread_safe())
   for (int v = 0; v < nv; ++v) {
     double g[3];
     H[v] = sizing.eval(m.point(v), g, &hints[v]);
@@ -151,12 +152,16 @@ class Lloyd3Problem {
     } else {
       // Plain relaxed Lloyd targets (kept for a restart), then the accelerated ones.
       std::vector<double> plain(z_free.size());
-      for (std::size_t i = 0; i < free_ids.size(); ++i) {
+      const int nf = static_cast<int>(free_ids.size());
+      int nb_limited = 0;
+#pragma omp parallel for schedule(static, 256) reduction(+ : nb_limited)
+      for (int i = 0; i < nf; ++i) {
         double goal[3];
         for (int d = 0; d < 3; ++d)
           goal[d] = z_free[3 * i + d] + o_.relaxation * (c_free[3 * i + d] - z_free[3 * i + d]);
-        if (!safe_target(free_ids[i], goal, star, constrained, &plain[3 * i])) ++s.nb_limited;
+        if (!safe_target(free_ids[i], goal, star, constrained, &plain[3 * i])) ++nb_limited;
       }
+      s.nb_limited += nb_limited;
       std::vector<double> next = plain;
       if (accelerated) {
         if (free_ids != accepted_free_) mixer_.reset();
@@ -164,7 +169,8 @@ class Lloyd3Problem {
         for (std::size_t k = 0; k < g.size(); ++k)
           g[k] = z_free[k] + o_.relaxation * (c_free[k] - z_free[k]);
         const std::vector<double> mixed = mixer_.next(z_free, g);
-        for (std::size_t i = 0; i < free_ids.size(); ++i)
+#pragma omp parallel for schedule(static, 256)
+        for (int i = 0; i < nf; ++i)
           safe_target(free_ids[i], &mixed[3 * i], star, constrained, &next[3 * i]);
       }
       have_accepted_ = true;

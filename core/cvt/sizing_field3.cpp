@@ -47,6 +47,7 @@ class Function final : public SizingField3 {
     }
     return f_(x);
   }
+  bool thread_safe() const override { return false; }
 
  private:
   std::function<double(const double*)> f_;

@@ -15,6 +15,9 @@ class SizingField3 {
   // H at x and its gradient g. `hint`: in/out cache of a location (a tet of a background mesh),
   // -1 if unknown.
   virtual double eval(const double* x, double g[3], int* hint) const = 0;
+  // eval may be called from several threads at once (a user callback, e.g. a Python function,
+  // may not).
+  virtual bool thread_safe() const { return true; }
 };
 
 // H = h everywhere.
