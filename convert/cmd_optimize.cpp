@@ -56,13 +56,16 @@ void register_optimize(CLI::App& app) {
              std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f",
                           p.phase.c_str(), p.iteration, p.restarted ? "*" : " ", p.D, p.energy,
                           p.q_min, p.q_avg);
-             if (p.nb_dual_cells + p.nb_clipped_cells > 0)
+             if (p.nb_dual_cells + p.nb_clipped_cells > 0) {
                std::fprintf(stderr,
-                            "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs (%s %d flips), "
-                            "%.2fs]",
+                            "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs (%s%d flips",
                             p.seconds_cells, p.nb_dual_cells, p.nb_clipped_cells,
-                            p.seconds_delaunay, p.rebuilt ? "rebuilt," : "", p.nb_flips,
-                            p.seconds_other);
+                            p.seconds_delaunay, p.rebuilt ? "rebuilt, " : "", p.nb_flips);
+               if (p.nb_stuck_faces + p.nb_short_moves > 0)
+                 std::fprintf(stderr, ", %d faces not Delaunay, %d moves short", p.nb_stuck_faces,
+                              p.nb_short_moves);
+               std::fprintf(stderr, "), %.2fs]", p.seconds_other);
+             }
              std::fprintf(stderr, "\n");
            };
          const OptimizeResult r = optimize(d, *opt);

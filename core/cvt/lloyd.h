@@ -30,6 +30,7 @@ struct LloydStep {
   // 3D re-insertion: flips that restored the Delaunay property, or a full rebuild.
   int nb_flips = 0;
   bool rebuilt = false;
+  int nb_stuck_faces = 0, nb_short_moves = 0;  // left by the flips (see Lloyd3Options)
 };
 
 struct LloydResult {

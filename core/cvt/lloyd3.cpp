@@ -186,14 +186,19 @@ class Lloyd3Problem {
     s.seconds_move = seconds_since(t0) - s.seconds_cells;
     const auto t1 = Clock::now();
     bool restored = false;
+    bool delaunay = false;
     if (o_.local_flips) {
       const RelocateStats rs = relocate_vertices(m_, constrained_set_, target);
       s.nb_flips = rs.nb_flips;
-      restored = rs.ok;
+      s.nb_stuck_faces = rs.nb_stuck;
+      s.nb_short_moves = rs.nb_pending;
+      delaunay = rs.ok;
+      restored = rs.ok || rs.nb_stuck + rs.nb_pending <= o_.max_flip_leftover * nv;
     }
-    // After flips every unconstrained face is locally Delaunay; TetGen's rebuild leaves a few
-    // non-Delaunay faces near the boundary.
-    delaunay_known_ = restored;
+    // After successful flips every unconstrained face is locally Delaunay; TetGen's rebuild
+    // leaves a few non-Delaunay faces near the boundary.
+    delaunay_known_ = delaunay;
+    mesh_is_cdt_ = delaunay || !restored;
     if (!restored) {
       m_.xyz = target;
       const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
@@ -209,6 +214,16 @@ class Lloyd3Problem {
 
   int nb_steiner() const {
     return nb_steiner_;
+  }
+
+  // The last iteration may have left a few faces non-Delaunay or vertices short of their targets
+  // (see Lloyd3Options::max_flip_leftover): rebuild the constrained Delaunay mesh of the points.
+  void finish() {
+    if (mesh_is_cdt_) return;
+    const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
+    nb_steiner_ += ds.nb_steiner;
+    verify_after_step();
+    mesh_is_cdt_ = true;
   }
 
  private:
@@ -253,6 +268,7 @@ class Lloyd3Problem {
   std::unique_ptr<Delaunay3> delaunay_;
   ConstrainedFaces constrained_set_;  // the constrained triangles never change
   bool delaunay_known_ = false;       // every unconstrained face is locally Delaunay
+  bool mesh_is_cdt_ = true;           // the mesh is the constrained Delaunay one of its points
   std::shared_ptr<const SizingField3> sizing_;
   std::vector<int> hints_;
   std::vector<double> H_, rho_;
@@ -275,7 +291,9 @@ LloydResult lloyd_optimize_3d(TetMesh& mesh, const Lloyd3Options& options,
   const MeshCheck c = check_mesh(mesh);
   if (!c.ok) throw InvariantError("lloyd_optimize_3d: invalid input mesh: " + c.problems.front());
   Lloyd3Problem problem(mesh, options);
-  return lloyd_iterate(problem, options.lloyd, progress);
+  LloydResult r = lloyd_iterate(problem, options.lloyd, progress);
+  problem.finish();
+  return r;
 }
 
 }  // namespace cvtmesh

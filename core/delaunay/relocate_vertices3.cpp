@@ -50,6 +50,7 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
     const RestoreDelaunayStats rs = restore_delaunay_by_flips(m, cf);
     st.nb_flips += rs.nb_flips23 + rs.nb_flips32;
     delaunay = rs.ok;
+    st.nb_stuck = rs.nb_stuck;
     pending.swap(left);
     if (pending.empty()) break;
   }

@@ -16,6 +16,7 @@ struct RelocateStats {
   int rounds = 0;      // move + flip rounds used
   int nb_flips = 0;    // 2-3 and 3-2 flips
   int nb_pending = 0;  // vertices not at their target on exit (ok = false)
+  int nb_stuck = 0;    // non-Delaunay unconstrained faces no flip could remove (ok = false)
 };
 
 // `target`: 3*#V coordinates (fixed vertices must keep theirs). On entry `mesh` is valid with its

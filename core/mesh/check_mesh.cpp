@@ -93,9 +93,14 @@ MeshCheck check_mesh(const TetMesh& m) {
                        " is not symmetric or points to a dead tet");
         continue;
       }
+      // Same face: t2's vertex opposite the face is none of the face's three, which are all t2's.
       const int* tv2 = &m.tets[4 * t2];
-      if (face_key(tv2[kTetFace[f2][0]], tv2[kTetFace[f2][1]], tv2[kTetFace[f2][2]]) !=
-          face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]])) {
+      bool same = true;
+      for (int k = 0; k < 3 && same; ++k) {
+        const int a = tv[kTetFace[f][k]];
+        same = a != tv2[f2] && (a == tv2[0] || a == tv2[1] || a == tv2[2] || a == tv2[3]);
+      }
+      if (!same) {
         ++r.nb_bad_adjacency;
         problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
                        " are adjacent but do not share the face");

@@ -76,6 +76,8 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
     p.nb_clipped_cells = s.nb_clipped_cells;
     p.nb_flips = s.nb_flips;
     p.rebuilt = s.rebuilt;
+    p.nb_stuck_faces = s.nb_stuck_faces;
+    p.nb_short_moves = s.nb_short_moves;
     o.progress(p);
   });
   r.seconds_lloyd = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -24,8 +24,9 @@ struct OptimizeProgress {
   // came from the exact Delaunay dual vs clipping.
   double seconds_cells = 0, seconds_delaunay = 0, seconds_other = 0;
   int nb_dual_cells = 0, nb_clipped_cells = 0;
-  int nb_flips = 0;      // Delaunay restored by this many flips...
-  bool rebuilt = false;  // ...or the tetrahedralization rebuilt
+  int nb_flips = 0;                            // Delaunay restored by this many flips...
+  bool rebuilt = false;                        // ...or the tetrahedralization rebuilt
+  int nb_stuck_faces = 0, nb_short_moves = 0;  // what the flips left (LloydStep)
 };
 
 struct OptimizeOptions {
