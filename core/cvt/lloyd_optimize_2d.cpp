@@ -1,5 +1,8 @@
 #include "core/cvt/lloyd_optimize_2d.h"
 
+#include <cmath>
+#include <cstdint>
+#include <random>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -19,15 +22,48 @@ std::string first_problem(const MeshCheck& c) {
   return c.problems.empty() ? "" : c.problems[0];
 }
 
+// Uniform double in [0, 1) from the generator's raw bits (same on every platform).
+double uniform01(std::mt19937& g) {
+  const std::uint64_t hi = g() >> 5, lo = g() >> 6;
+  return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) / 9007199254740992.0;
+}
+
 class Lloyd2dProblem {
  public:
-  Lloyd2dProblem(TriMesh2& mesh, const Lloyd2dOptions& o)
-      : mesh_(mesh), o_(o), sizing_(mesh, o.sizing), mixer_(o.anderson_depth) {
+  Lloyd2dProblem(TriMesh2& mesh, const Lloyd2dOptions& o, const SizingField2d& sizing)
+      : mesh_(mesh), o_(o), sizing_(sizing), mixer_(o.anderson_depth) {
     std::vector<char> on_edge(mesh.nb_vertices(), 0);
     for (int v : mesh.edges) on_edge[v] = 1;
     for (int v = 0; v < mesh.nb_vertices(); ++v)
       if (mesh.vclass[v].dim == 2 && !on_edge[v]) free_.push_back(v);
     if (!sizing_.is_uniform()) density_ = [this](const double* x) { return sizing_.density(x); };
+  }
+
+  // The CVT energy F of the current mesh (all cells).
+  double energy() const {
+    double e = 0;
+    for (const VoronoiCell2d& c : voronoi_centroids2d(mesh_, density_)) e += c.energy;
+    return e;
+  }
+
+  // Moves every free vertex by a random vector uniform in the disk of radius amount * H(z)
+  // (halved by safe_target until it stays inside its surface), then rebuilds the mesh.
+  void kick(double amount, std::mt19937& rng) {
+    prepare_safeguard();
+    const std::size_t n = free_.size();
+    std::vector<double> next(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double* z = mesh_.point(free_[k]);
+      const double r = amount * sizing_.size(z) * std::sqrt(uniform01(rng));
+      const double a = 2 * M_PI * uniform01(rng);
+      const double goal[2] = {z[0] + r * std::cos(a), z[1] + r * std::sin(a)};
+      safe_target(free_[k], goal, &next[2 * k]);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double* p = mesh_.point(free_[k]);
+      p[0] = next[2 * k], p[1] = next[2 * k + 1];
+    }
+    cdt2d_remesh(mesh_);
   }
 
   LloydStep step() {
@@ -124,7 +160,7 @@ class Lloyd2dProblem {
 
   TriMesh2& mesh_;
   Lloyd2dOptions o_;
-  SizingField2d sizing_;
+  const SizingField2d& sizing_;
   std::function<double(const double*)> density_;
   std::vector<int> free_;
   std::vector<char> stop_;
@@ -138,13 +174,44 @@ class Lloyd2dProblem {
 }  // namespace
 
 LloydResult lloyd_optimize_2d(TriMesh2& mesh, const Lloyd2dOptions& options,
-                              const std::function<void(const LloydStep&)>& progress) {
+                              const std::function<void(const LloydStep&)>& progress,
+                              Lloyd2dReport* report) {
   if (mesh.adj.size() != mesh.tris.size()) build_adjacency2(mesh);
   const MeshCheck before = check_mesh(mesh);
   if (!before.ok)
     throw InputError("lloyd_optimize_2d: invalid input mesh: " + first_problem(before));
-  Lloyd2dProblem problem(mesh, options);
-  LloydResult r = lloyd_iterate(problem, options.lloyd, progress);
+  const SizingField2d sizing(mesh, options.sizing);  // from the input mesh, for every run
+  Lloyd2dReport rep;
+  LloydResult r;
+  {
+    Lloyd2dProblem problem(mesh, options, sizing);
+    r = lloyd_iterate(problem, options.lloyd, progress);
+    rep.lloyd_energy = rep.energy = problem.energy();
+    rep.lloyd_iterations = r.iterations;
+  }
+  if (options.hops > 0) {
+    std::mt19937 rng(options.hop_seed);
+    TriMesh2 best = mesh;
+    for (int hop = 1; hop <= options.hops; ++hop) {
+      TriMesh2 trial = best;
+      Lloyd2dProblem problem(trial, options, sizing);
+      problem.kick(options.hop_amount, rng);
+      const LloydResult hr = lloyd_iterate(problem, options.lloyd, progress);
+      const double e = problem.energy();
+      r.iterations += hr.iterations;
+      r.history.insert(r.history.end(), hr.history.begin(), hr.history.end());
+      const bool accept = hr.converged && e < rep.energy;
+      rep.hop_energies.push_back(e);
+      if (accept) {
+        best = std::move(trial);
+        rep.energy = e;
+        ++rep.hops_accepted;
+      }
+      ++rep.hops;
+    }
+    mesh = std::move(best);
+  }
+  if (report) *report = rep;
   const MeshCheck after = check_mesh(mesh);
   if (!after.ok)
     throw InvariantError("lloyd_optimize_2d: mesh invalid after Lloyd: " + first_problem(after));

@@ -3,6 +3,7 @@
 // constrained Delaunay triangulation of the new positions. Runs in the generic lloyd_iterate.
 #pragma once
 #include <functional>
+#include <vector>
 
 #include "core/cvt/lloyd.h"
 #include "core/cvt/sizing_field2d.h"
@@ -21,6 +22,22 @@ struct Lloyd2dOptions {
   // energies never increase.
   int anderson_depth = 0;
   int max_halvings = 10;  // safeguard: halvings of a move whose target leaves the surface
+  // Basin hopping (a global minimisation of the same CVT energy): after Lloyd has converged,
+  // `hops` times: move every free vertex of the best configuration so far by a random vector
+  // uniform in the disk of radius hop_amount * H, run Lloyd again to convergence, and keep the
+  // result if its CVT energy F is lower. 0 = plain Lloyd (the paper's).
+  int hops = 0;
+  double hop_amount = 0.3;
+  unsigned hop_seed = 1;
+};
+
+// What lloyd_optimize_2d reached (energies F of the final meshes, exact for uniform rho).
+struct Lloyd2dReport {
+  double lloyd_energy = 0;  // F after the first Lloyd run (no hop)
+  int lloyd_iterations = 0;
+  double energy = 0;  // F of the returned mesh (<= lloyd_energy)
+  int hops = 0, hops_accepted = 0;
+  std::vector<double> hop_energies;  // F reached after each hop
 };
 
 // mesh: a valid planar mesh (check_mesh ok; adjacency built), optimized in place. Free vertices
@@ -31,6 +48,7 @@ struct Lloyd2dOptions {
 // vertices included) before the move; D = (1/k) sum |z_i - z*_i|^2 / H(z_i)^2 over the k free
 // vertices. Throws InputError for an invalid input mesh, InvariantError if a step breaks the mesh.
 LloydResult lloyd_optimize_2d(TriMesh2& mesh, const Lloyd2dOptions& options = {},
-                              const std::function<void(const LloydStep&)>& progress = nullptr);
+                              const std::function<void(const LloydStep&)>& progress = nullptr,
+                              Lloyd2dReport* report = nullptr);
 
 }  // namespace cvtmesh
