@@ -23,6 +23,7 @@ struct LloydStep {
   int nb_free = 0;         // generators allowed to move
   int nb_limited = 0;      // moves shortened by a safeguard (target outside the domain, ...)
   bool restarted = false;  // an accelerated step was rejected (energy rose): plain step taken
+  int hop = 0;             // basin-hopping trial this step belongs to (0 = the first Lloyd run)
 };
 
 struct LloydResult {

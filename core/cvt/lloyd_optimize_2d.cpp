@@ -48,7 +48,8 @@ class Lloyd2dProblem {
 
   // Moves every free vertex by a random vector uniform in the disk of radius amount * H(z)
   // (halved by safe_target until it stays inside its surface), then rebuilds the mesh.
-  void kick(double amount, std::mt19937& rng) {
+  void kick(double amount, std::mt19937& rng, int hop) {
+    hop_ = hop;
     prepare_safeguard();
     const std::size_t n = free_.size();
     std::vector<double> next(2 * n);
@@ -68,6 +69,7 @@ class Lloyd2dProblem {
 
   LloydStep step() {
     LloydStep s;
+    s.hop = hop_;
     s.nb_free = static_cast<int>(free_.size());
     const std::vector<VoronoiCell2d> cells = voronoi_centroids2d(mesh_, density_);
     for (const VoronoiCell2d& c : cells) s.energy += c.energy;
@@ -167,6 +169,7 @@ class Lloyd2dProblem {
   std::vector<int> vtri_;
   AndersonMixer mixer_;
   bool have_accepted_ = false, just_restarted_ = false;
+  int hop_ = 0;
   double accepted_energy_ = 0;
   std::vector<double> accepted_plain_;
 };
@@ -195,7 +198,7 @@ LloydResult lloyd_optimize_2d(TriMesh2& mesh, const Lloyd2dOptions& options,
     for (int hop = 1; hop <= options.hops; ++hop) {
       TriMesh2 trial = best;
       Lloyd2dProblem problem(trial, options, sizing);
-      problem.kick(options.hop_amount, rng);
+      problem.kick(options.hop_amount, rng, hop);
       const LloydResult hr = lloyd_iterate(problem, options.lloyd, progress);
       const double e = problem.energy();
       r.iterations += hr.iterations;
