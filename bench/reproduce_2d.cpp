@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
   app.add_option("--examples", examples, "examples to run (quad, washer)");
   app.add_option("--washer-r1", r1, "washer: outer radius (geo/washer.geo r1)");
   double rand_amount = -1, clus_amount = -1, relaxation = 1;
-  int anderson = 0, hops = 0;
+  int anderson = 0, hops = 0, lbfgs = 0;
+  app.add_option("--lbfgs", lbfgs, "CVT: L-BFGS on the energy with this memory (0 = Lloyd)");
   double hop_amount = 0.3;
   unsigned hop_seed = 1;
   app.add_option("--hops", hops, "CVT: basin-hopping trials after Lloyd (0 = the paper's Lloyd)");
@@ -187,6 +188,7 @@ int main(int argc, char** argv) {
                                   .sizing = e.sizing,
                                   .relaxation = relaxation,
                                   .anderson_depth = anderson,
+                                  .lbfgs_memory = lbfgs,
                                   .hops = hops,
                                   .hop_amount = hop_amount,
                                   .hop_seed = hop_seed},
@@ -213,8 +215,9 @@ int main(int argc, char** argv) {
         const std::string up = std::string(method) == "cvt"  ? "CVT"
                                : std::string(method) == "dl" ? "DL"
                                                              : "WDL";
-        svg(r.mesh, e.name + "_" + method + "_" + p,
-            e.title + ": " + up + " from " +
+        const bool hopped = std::string(method) == "cvt" && hops > 0;
+        svg(r.mesh, e.name + "_" + method + (hopped ? "_hops_" : "_") + p,
+            e.title + ": " + up + (hopped ? " + basin hopping" : "") + " from " +
                 (std::string(p) == "randpert" ? "RandPert" : "ClusPert"));
         runs[std::string(method) + "_" + p] = std::move(r);
       }

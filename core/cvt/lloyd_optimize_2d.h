@@ -21,6 +21,9 @@ struct Lloyd2dOptions {
   // the energy is undone and replaced by the plain step (LloydStep::restarted): the accepted
   // energies never increase.
   int anderson_depth = 0;
+  // L-BFGS on F instead of Lloyd's fixed-point step (Liu et al. 2009) with this many memory
+  // pairs (0 = Lloyd). relaxation and anderson_depth are then not used.
+  int lbfgs_memory = 0;
   int max_halvings = 10;  // safeguard: halvings of a move whose target leaves the surface
   // Basin hopping (a global minimisation of the same CVT energy): after Lloyd has converged,
   // `hops` times: move every free vertex of the best configuration so far by a random vector
