@@ -126,7 +126,7 @@ class Lloyd2dProblem {
 
   // One L-BFGS iteration on F (Liu et al. 2009): gradient dF/dz_i = 2 m_i (z_i - c_i), initial
   // inverse Hessian diag(1 / (2 m_i)) (so the first direction is Lloyd's step), a backtracking
-  // line search (Armijo) over steps whose every target stays strictly inside its surface, the
+  // line search (Armijo, at most 10 halvings) over steps whose every target stays strictly inside its surface, the
   // mesh rebuilt (constrained Delaunay) at each trial. If no step is accepted, the plain Lloyd
   // step is taken and the memory cleared (LloydStep::restarted).
   LloydStep step_lbfgs() {
@@ -188,7 +188,7 @@ class Lloyd2dProblem {
     double a = 1;
     bool ok = false;
     std::vector<double> target(2 * n);
-    for (int ls = 0; ls < 30 && !ok; ++ls, a *= 0.5) {
+    for (int ls = 0; ls < 10 && !ok; ++ls, a *= 0.5) {
       bool inside = true;
       for (std::size_t k = 0; k < n && inside; ++k) {
         target[2 * k] = z[2 * k] + a * dir[2 * k];

@@ -32,6 +32,9 @@ struct OptimizeOptions {
   // to convergence, keeping the configuration of lowest energy; random stream from `seed`.
   int hops = 0;
   double hop_amount = 0.3;
+  // 2D CVT only: minimise the CVT energy by L-BFGS with this memory instead of Lloyd's step
+  // (Lloyd2dOptions::lbfgs_memory; 0 = Lloyd, then relaxation/anderson_depth apply).
+  int lbfgs_memory = 0;
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";

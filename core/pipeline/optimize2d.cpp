@@ -56,6 +56,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
     lo.sizing = sizing;
     lo.relaxation = options.relaxation;
     lo.anderson_depth = options.anderson_depth;
+    lo.lbfgs_memory = options.lbfgs_memory;
     lo.hops = options.hops;
     lo.hop_amount = options.hop_amount;
     lo.hop_seed = options.seed;
