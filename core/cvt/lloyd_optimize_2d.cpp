@@ -126,9 +126,9 @@ class Lloyd2dProblem {
 
   // One L-BFGS iteration on F (Liu et al. 2009): gradient dF/dz_i = 2 m_i (z_i - c_i), initial
   // inverse Hessian diag(1 / (2 m_i)) (so the first direction is Lloyd's step), a backtracking
-  // line search (Armijo, at most 10 halvings) over steps whose every target stays strictly inside its surface, the
-  // mesh rebuilt (constrained Delaunay) at each trial. If no step is accepted, the plain Lloyd
-  // step is taken and the memory cleared (LloydStep::restarted).
+  // line search (Armijo, at most 10 halvings) over steps whose every target stays strictly inside
+  // its surface, the mesh rebuilt (constrained Delaunay) at each trial. If no step is accepted, the
+  // plain Lloyd step is taken and the memory cleared (LloydStep::restarted).
   LloydStep step_lbfgs() {
     LloydStep s;
     s.hop = hop_;
@@ -311,14 +311,14 @@ class Lloyd2dProblem {
   std::vector<int> vtri_;
   AndersonMixer mixer_;
   bool have_accepted_ = false, just_restarted_ = false;
+  double accepted_energy_ = 0;
+  std::vector<double> accepted_plain_;
   int hop_ = 0;
   // L-BFGS: centroids at the current mesh (valid if have_cells_), memory pairs.
   bool have_cells_ = false;
   std::vector<VoronoiCell2d> cells_;
   std::vector<std::vector<double>> mem_s_, mem_y_;
   std::vector<double> mem_rho_;
-  double accepted_energy_ = 0;
-  std::vector<double> accepted_plain_;
 };
 
 }  // namespace

@@ -25,10 +25,11 @@ struct Lloyd2dOptions {
   // pairs (0 = Lloyd). relaxation and anderson_depth are then not used.
   int lbfgs_memory = 0;
   int max_halvings = 10;  // safeguard: halvings of a move whose target leaves the surface
-  // Basin hopping (a global minimisation of the same CVT energy): after Lloyd has converged,
-  // `hops` times: move every free vertex of the best configuration so far by a random vector
-  // uniform in the disk of radius hop_amount * H, run Lloyd again to convergence, and keep the
-  // result if its CVT energy F is lower. 0 = plain Lloyd (the paper's).
+  // Basin hopping (a global minimisation of the same CVT energy): after the minimiser (Lloyd or
+  // L-BFGS) has converged, `hops` times: move every free vertex of the best configuration so far
+  // by a random vector uniform in the disk of radius hop_amount * H (halved while it leaves the
+  // surface), run the minimiser again, and keep the result if it converged and its CVT energy F
+  // is lower. Only F decides. 0 = no hopping (the paper's Lloyd).
   int hops = 0;
   double hop_amount = 0.3;
   unsigned hop_seed = 1;
@@ -36,7 +37,7 @@ struct Lloyd2dOptions {
 
 // What lloyd_optimize_2d reached (energies F of the final meshes, exact for uniform rho).
 struct Lloyd2dReport {
-  double lloyd_energy = 0;  // F after the first Lloyd run (no hop)
+  double lloyd_energy = 0;  // F after the first run of the minimiser (before any hop)
   int lloyd_iterations = 0;
   double energy = 0;  // F of the returned mesh (<= lloyd_energy)
   int hops = 0, hops_accepted = 0;
