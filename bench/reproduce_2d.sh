@@ -18,6 +18,7 @@ for s in 2 3 4 5; do
 done
 # Lower-energy CVTs (docs/reproduction-2d.md, "Reaching the target"): L-BFGS and basin hopping.
 $B --examples washer --methods cvt --lbfgs 7 > "$OUT/washer_cvt_lbfgs.md"
+$B --examples quad --methods cvt --lbfgs 7 --hops 20 > "$OUT/quad_cvt_lbfgs_hops20.md"
 $B --examples washer --methods cvt --lbfgs 7 --hops 20 --out docs/img/2d > "$OUT/washer_cvt_lbfgs_hops20.md"
 $B --examples washer --methods cvt --relaxation 1.5 --anderson 5 --hops 20 > "$OUT/washer_cvt_accelerated_hops20.md"
 $B --examples washer --methods cvt --hops 20 > "$OUT/washer_cvt_plain_hops20.md"
@@ -30,6 +31,8 @@ for s in 2 3 4 5; do
   $B --examples washer --methods cvt --seed $s --lbfgs 7 --hops 20 > "$OUT/washer_cvt_lbfgs_hops20_seed$s.md"
   $B --examples washer --methods cvt --seed $s --relaxation 1.5 --anderson 5 --hops 20 > "$OUT/washer_cvt_accelerated_hops20_seed$s.md"
 done
+$B --examples washer --methods cvt --lbfgs 7 --hops 60 > "$OUT/washer_cvt_lbfgs_hops60.md"
+$B --examples washer --methods cvt --lbfgs 7 --hops 40 --hop-amount 0.5 > "$OUT/washer_cvt_lbfgs_hops40_amount0.5.md"
 for hs in 2 3; do
   $B --examples washer --methods cvt --lbfgs 7 --hops 20 --hop-seed $hs > "$OUT/washer_cvt_lbfgs_hops20_hopseed$hs.md"
 done
