@@ -18,11 +18,12 @@ struct LloydOptions {
 // What one Lloyd iteration reports.
 struct LloydStep {
   int iteration = 0;
-  int hop = 0;         // 2D basin-hopping trial this step belongs to (0 = the first minimiser run)
-  double D = 0;        // normalised displacement to the centroids (see LloydOptions)
-  double energy = 0;   // CVT energy F = sum_i int_{V_i} rho |x - z_i|^2 before the move
-  int nb_free = 0;     // generators allowed to move
-  int nb_limited = 0;  // moves shortened by a safeguard (target outside the domain, ...)
+  // 2D basin hopping: the trial this step belongs to (0 = the first minimiser run).
+  int hop = 0;
+  double D = 0;            // normalised displacement to the centroids (see LloydOptions)
+  double energy = 0;       // CVT energy F = sum_i int_{V_i} rho |x - z_i|^2 before the move
+  int nb_free = 0;         // generators allowed to move
+  int nb_limited = 0;      // moves shortened by a safeguard (target outside the domain, ...)
   bool restarted = false;  // an accelerated step was rejected (energy rose): plain step taken
 };
 
