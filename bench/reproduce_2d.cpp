@@ -37,6 +37,7 @@ struct Run {
   int iterations = 0;
   bool converged = false;
   double seconds = 0;
+  Lloyd2dReport report;  // CVT only
 };
 
 // Distance from each vertex of a to the nearest vertex of b, divided by the local size h(x):
@@ -101,7 +102,13 @@ int main(int argc, char** argv) {
   app.add_option("--examples", examples, "examples to run (quad, washer)");
   app.add_option("--washer-r1", r1, "washer: outer radius (geo/washer.geo r1)");
   double rand_amount = -1, clus_amount = -1, relaxation = 1;
-  int anderson = 0;
+  int anderson = 0, hops = 0, lbfgs = 0;
+  app.add_option("--lbfgs", lbfgs, "CVT: L-BFGS on the energy with this memory (0 = Lloyd)");
+  double hop_amount = 0.3;
+  unsigned hop_seed = 1;
+  app.add_option("--hops", hops, "CVT: basin-hopping trials after Lloyd (0 = the paper's Lloyd)");
+  app.add_option("--hop-amount", hop_amount, "CVT: basin-hopping kick radius, in units of h");
+  app.add_option("--hop-seed", hop_seed, "CVT: basin-hopping random seed");
   app.add_option("--relaxation", relaxation, "Lloyd over-relaxation (1 = the paper's Lloyd)");
   app.add_option("--anderson", anderson,
                  "Lloyd Anderson acceleration depth (0 = the paper's Lloyd)");
@@ -176,10 +183,16 @@ int main(int argc, char** argv) {
         const auto t0 = std::chrono::steady_clock::now();
         LloydResult lr;
         if (std::string(method) == "cvt") {
-          lr = lloyd_optimize_2d(r.mesh, {.lloyd = loop,
-                                          .sizing = e.sizing,
-                                          .relaxation = relaxation,
-                                          .anderson_depth = anderson});
+          lr = lloyd_optimize_2d(r.mesh,
+                                 {.lloyd = loop,
+                                  .sizing = e.sizing,
+                                  .relaxation = relaxation,
+                                  .anderson_depth = anderson,
+                                  .lbfgs_memory = lbfgs,
+                                  .hops = hops,
+                                  .hop_amount = hop_amount,
+                                  .hop_seed = hop_seed},
+                                 nullptr, &r.report);
         } else {
           Smooth2dOptions so;
           so.loop = loop;
@@ -188,6 +201,12 @@ int main(int argc, char** argv) {
                                            : wdl_optimize_2d(r.mesh, so);
         }
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!r.report.hop_energies.empty()) {
+          std::fprintf(stderr, "%s %s hops: Lloyd F %.8e;", e.name.c_str(), p,
+                       r.report.lloyd_energy);
+          for (double f : r.report.hop_energies) std::fprintf(stderr, " %.8e", f);
+          std::fprintf(stderr, "\n");
+        }
         r.iterations = lr.iterations;
         r.converged = lr.converged;
         if (!check_mesh(r.mesh).ok)
@@ -196,8 +215,9 @@ int main(int argc, char** argv) {
         const std::string up = std::string(method) == "cvt"  ? "CVT"
                                : std::string(method) == "dl" ? "DL"
                                                              : "WDL";
-        svg(r.mesh, e.name + "_" + method + "_" + p,
-            e.title + ": " + up + " from " +
+        const bool hopped = std::string(method) == "cvt" && hops > 0;
+        svg(r.mesh, e.name + "_" + method + (hopped ? "_hops_" : "_") + p,
+            e.title + ": " + up + (hopped ? " + basin hopping" : "") + " from " +
                 (std::string(p) == "randpert" ? "RandPert" : "ClusPert"));
         runs[std::string(method) + "_" + p] = std::move(r);
       }
@@ -213,6 +233,15 @@ int main(int argc, char** argv) {
                     a.iterations, b.iterations, a.converged ? "yes" : "no",
                     b.converged ? "yes" : "no", a.seconds, b.seconds);
       md += buf;
+      if (std::string(method) == "cvt") {
+        std::snprintf(buf, sizeof buf,
+                      "CVT energy F: Lloyd %.8e / %.8e (%d / %d iterations); final %.8e / %.8e "
+                      "(hops accepted %d of %d / %d of %d)\n\n",
+                      a.report.lloyd_energy, b.report.lloyd_energy, a.report.lloyd_iterations,
+                      b.report.lloyd_iterations, a.report.energy, b.report.energy,
+                      a.report.hops_accepted, a.report.hops, b.report.hops_accepted, b.report.hops);
+        md += buf;
+      }
       const Match ab = match(a.mesh, b.mesh, e.h, 0.05);
       std::snprintf(buf, sizeof buf,
                     "RandPert vs ClusPert result: largest distance from a vertex to the nearest "

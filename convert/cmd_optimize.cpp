@@ -31,7 +31,18 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
   c->add_option("--anderson", o.anderson_depth,
                 "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
       ->check(CLI::Range(0, 20));
-  c->add_option("--seed", o.seed, "random seed (methods that use randomness)");
+  c->add_option("--lbfgs", o.lbfgs_memory,
+                "2D CVT: minimise the CVT energy by L-BFGS with this memory (e.g. 7) instead of "
+                "Lloyd's step (0 = Lloyd)")
+      ->check(CLI::Range(0, 50));
+  c->add_option("--hops", o.hops,
+                "2D CVT: basin-hopping trials after Lloyd converges (0 = off): kick every free "
+                "vertex randomly, re-run Lloyd, keep the mesh of lowest CVT energy")
+      ->check(CLI::Range(0, 100000));
+  c->add_option("--hop-amount", o.hop_amount,
+                "2D CVT: basin-hopping kick radius, in units of the local size h")
+      ->check(CLI::Range(0.01, 1.0));
+  c->add_option("--seed", o.seed, "random seed (methods that use randomness, --hops)");
 }
 
 void register_optimize(CLI::App& app) {

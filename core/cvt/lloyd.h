@@ -18,6 +18,8 @@ struct LloydOptions {
 // What one Lloyd iteration reports.
 struct LloydStep {
   int iteration = 0;
+  // 2D basin hopping: the trial this step belongs to (0 = the first minimiser run).
+  int hop = 0;
   double D = 0;            // normalised displacement to the centroids (see LloydOptions)
   double energy = 0;       // CVT energy F = sum_i int_{V_i} rho |x - z_i|^2 before the move
   int nb_free = 0;         // generators allowed to move

@@ -1,5 +1,8 @@
 #include "core/cvt/lloyd_optimize_2d.h"
 
+#include <cmath>
+#include <cstdint>
+#include <random>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -19,10 +22,16 @@ std::string first_problem(const MeshCheck& c) {
   return c.problems.empty() ? "" : c.problems[0];
 }
 
+// Uniform double in [0, 1) from the generator's raw bits (same on every platform).
+double uniform01(std::mt19937& g) {
+  const std::uint64_t hi = g() >> 5, lo = g() >> 6;
+  return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) / 9007199254740992.0;
+}
+
 class Lloyd2dProblem {
  public:
-  Lloyd2dProblem(TriMesh2& mesh, const Lloyd2dOptions& o)
-      : mesh_(mesh), o_(o), sizing_(mesh, o.sizing), mixer_(o.anderson_depth) {
+  Lloyd2dProblem(TriMesh2& mesh, const Lloyd2dOptions& o, const SizingField2d& sizing)
+      : mesh_(mesh), o_(o), sizing_(sizing), mixer_(o.anderson_depth) {
     std::vector<char> on_edge(mesh.nb_vertices(), 0);
     for (int v : mesh.edges) on_edge[v] = 1;
     for (int v = 0; v < mesh.nb_vertices(); ++v)
@@ -30,8 +39,39 @@ class Lloyd2dProblem {
     if (!sizing_.is_uniform()) density_ = [this](const double* x) { return sizing_.density(x); };
   }
 
+  // The CVT energy F of the current mesh (all cells).
+  double energy() const {
+    double e = 0;
+    for (const VoronoiCell2d& c : voronoi_centroids2d(mesh_, density_)) e += c.energy;
+    return e;
+  }
+
+  // Moves every free vertex by a random vector uniform in the disk of radius amount * H(z)
+  // (halved by safe_target until it stays inside its surface), then rebuilds the mesh.
+  void kick(double amount, std::mt19937& rng, int hop) {
+    hop_ = hop;
+    have_cells_ = false;
+    prepare_safeguard();
+    const std::size_t n = free_.size();
+    std::vector<double> next(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double* z = mesh_.point(free_[k]);
+      const double r = amount * sizing_.size(z) * std::sqrt(uniform01(rng));
+      const double a = 2 * M_PI * uniform01(rng);
+      const double goal[2] = {z[0] + r * std::cos(a), z[1] + r * std::sin(a)};
+      safe_target(free_[k], goal, &next[2 * k]);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double* p = mesh_.point(free_[k]);
+      p[0] = next[2 * k], p[1] = next[2 * k + 1];
+    }
+    cdt2d_remesh(mesh_);
+  }
+
   LloydStep step() {
+    if (o_.lbfgs_memory > 0) return step_lbfgs();
     LloydStep s;
+    s.hop = hop_;
     s.nb_free = static_cast<int>(free_.size());
     const std::vector<VoronoiCell2d> cells = voronoi_centroids2d(mesh_, density_);
     for (const VoronoiCell2d& c : cells) s.energy += c.energy;
@@ -84,6 +124,134 @@ class Lloyd2dProblem {
     return s;
   }
 
+  // One L-BFGS iteration on F (Liu et al. 2009): gradient dF/dz_i = 2 m_i (z_i - c_i), initial
+  // inverse Hessian diag(1 / (2 m_i)) (so the first direction is Lloyd's step), a backtracking
+  // line search (Armijo, at most 10 halvings) over steps whose every target stays strictly inside
+  // its surface, the mesh rebuilt (constrained Delaunay) at each trial. If no step is accepted, the
+  // plain Lloyd step is taken and the memory cleared (LloydStep::restarted).
+  LloydStep step_lbfgs() {
+    LloydStep s;
+    s.hop = hop_;
+    const std::size_t n = free_.size();
+    s.nb_free = static_cast<int>(n);
+    if (!have_cells_) cells_ = voronoi_centroids2d(mesh_, density_), have_cells_ = true;
+    double F = 0;
+    for (const VoronoiCell2d& c : cells_) F += c.energy;
+    s.energy = F;
+    std::vector<double> z(2 * n), g(2 * n), h0(2 * n);
+    double D = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const int v = free_[k];
+      const VoronoiCell2d& c = cells_[v];
+      const double* p = mesh_.point(v);
+      const double h = sizing_.size(p);
+      for (int d = 0; d < 2; ++d) {
+        z[2 * k + d] = p[d];
+        g[2 * k + d] = 2 * c.mass * (p[d] - c.centroid[d]);
+        h0[2 * k + d] = c.mass > 0 ? 1 / (2 * c.mass) : 0;
+      }
+      const double dx = c.centroid[0] - p[0], dy = c.centroid[1] - p[1];
+      D += (dx * dx + dy * dy) / (h * h);
+    }
+    s.D = n ? D / static_cast<double>(n) : 0;
+    if (s.D < o_.lloyd.tolerance) return s;  // converged: lloyd_iterate stops, nothing to move
+
+    auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
+      double r = 0;
+      for (std::size_t k = 0; k < a.size(); ++k) r += a[k] * b[k];
+      return r;
+    };
+    // Two-loop recursion: p = -H g.
+    std::vector<double> q = g;
+    const int m = static_cast<int>(mem_s_.size());
+    std::vector<double> alpha(m);
+    for (int i = m - 1; i >= 0; --i) {
+      alpha[i] = mem_rho_[i] * dot(mem_s_[i], q);
+      for (std::size_t k = 0; k < q.size(); ++k) q[k] -= alpha[i] * mem_y_[i][k];
+    }
+    for (std::size_t k = 0; k < q.size(); ++k) q[k] *= h0[k];
+    for (int i = 0; i < m; ++i) {
+      const double beta = mem_rho_[i] * dot(mem_y_[i], q);
+      for (std::size_t k = 0; k < q.size(); ++k) q[k] += mem_s_[i][k] * (alpha[i] - beta);
+    }
+    std::vector<double> dir(2 * n);
+    for (std::size_t k = 0; k < dir.size(); ++k) dir[k] = -q[k];
+    double gp = dot(g, dir);
+    if (!(gp < 0)) {  // not a descent direction: Lloyd's
+      clear_memory();
+      for (std::size_t k = 0; k < dir.size(); ++k) dir[k] = -h0[k] * g[k];
+      gp = dot(g, dir);
+    }
+
+    prepare_safeguard();
+    const TriMesh2 backup = mesh_;
+    double a = 1;
+    bool ok = false;
+    std::vector<double> target(2 * n);
+    for (int ls = 0; ls < 10 && !ok; ++ls, a *= 0.5) {
+      bool inside = true;
+      for (std::size_t k = 0; k < n && inside; ++k) {
+        target[2 * k] = z[2 * k] + a * dir[2 * k];
+        target[2 * k + 1] = z[2 * k + 1] + a * dir[2 * k + 1];
+        inside = strictly_inside(free_[k], &target[2 * k]);
+      }
+      if (!inside) continue;
+      for (std::size_t k = 0; k < n; ++k) {
+        double* p = mesh_.point(free_[k]);
+        p[0] = target[2 * k], p[1] = target[2 * k + 1];
+      }
+      cdt2d_remesh(mesh_);
+      std::vector<VoronoiCell2d> trial = voronoi_centroids2d(mesh_, density_);
+      double Fn = 0;
+      for (const VoronoiCell2d& c : trial) Fn += c.energy;
+      if (Fn <= F + 1e-4 * a * gp) {
+        ok = true;
+        cells_ = std::move(trial);
+      } else {
+        mesh_ = backup;
+      }
+    }
+    if (!ok) {  // the plain Lloyd step (lowers F for the current partition)
+      s.restarted = true;
+      clear_memory();
+      std::vector<double> next(2 * n);
+      for (std::size_t k = 0; k < n; ++k) {
+        const double* c = cells_[free_[k]].centroid;
+        if (!safe_target(free_[k], c, &next[2 * k])) ++s.nb_limited;
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        double* p = mesh_.point(free_[k]);
+        p[0] = next[2 * k], p[1] = next[2 * k + 1];
+      }
+      cdt2d_remesh(mesh_);
+      have_cells_ = false;
+      return s;
+    }
+    if (a < 1) ++s.nb_limited;
+    // Memory update with the new gradient.
+    std::vector<double> sv(2 * n), yv(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const VoronoiCell2d& c = cells_[free_[k]];
+      const double* p = mesh_.point(free_[k]);
+      for (int d = 0; d < 2; ++d) {
+        sv[2 * k + d] = p[d] - z[2 * k + d];
+        yv[2 * k + d] = 2 * c.mass * (p[d] - c.centroid[d]) - g[2 * k + d];
+      }
+    }
+    const double sy = dot(sv, yv);
+    if (sy > 1e-12 * std::sqrt(dot(sv, sv) * dot(yv, yv))) {
+      mem_s_.push_back(std::move(sv));
+      mem_y_.push_back(std::move(yv));
+      mem_rho_.push_back(1 / sy);
+      if (static_cast<int>(mem_s_.size()) > o_.lbfgs_memory) {
+        mem_s_.erase(mem_s_.begin());
+        mem_y_.erase(mem_y_.begin());
+        mem_rho_.erase(mem_rho_.begin());
+      }
+    }
+    return s;
+  }
+
  private:
   // Constrained slots and a triangle at each vertex of the current mesh, for safe_target.
   void prepare_safeguard() {
@@ -103,6 +271,20 @@ class Lloyd2dProblem {
     }
   }
 
+  // p is strictly inside v's surface: reached from v's triangles without crossing a constrained
+  // edge, off every constrained edge and other vertex (prepare_safeguard first).
+  bool strictly_inside(int v, const double* p) const {
+    const Locate2dResult r = locate2d(mesh_, p, vtri_[v], stop_);
+    return r.tri >= 0 && (r.on_vertex < 0 || r.on_vertex == v) &&
+           (r.on_edge < 0 || !stop_[3 * r.tri + r.on_edge]);
+  }
+
+  void clear_memory() {
+    mem_s_.clear();
+    mem_y_.clear();
+    mem_rho_.clear();
+  }
+
   // The move of v towards goal, halved until the point is strictly inside v's surface (reached
   // from v's triangles without crossing a constrained edge, off every constrained edge and other
   // vertex). Writes the position (v's own if every try failed); false if shortened.
@@ -111,9 +293,7 @@ class Lloyd2dProblem {
     double t = 1;
     for (int h = 0; h <= o_.max_halvings; ++h, t *= 0.5) {
       const double p[2] = {z[0] + t * (goal[0] - z[0]), z[1] + t * (goal[1] - z[1])};
-      const Locate2dResult r = locate2d(mesh_, p, vtri_[v], stop_);
-      if (r.tri >= 0 && (r.on_vertex < 0 || r.on_vertex == v) &&
-          (r.on_edge < 0 || !stop_[3 * r.tri + r.on_edge])) {
+      if (strictly_inside(v, p)) {
         out[0] = p[0], out[1] = p[1];
         return h == 0;
       }
@@ -124,7 +304,7 @@ class Lloyd2dProblem {
 
   TriMesh2& mesh_;
   Lloyd2dOptions o_;
-  SizingField2d sizing_;
+  const SizingField2d& sizing_;
   std::function<double(const double*)> density_;
   std::vector<int> free_;
   std::vector<char> stop_;
@@ -133,18 +313,55 @@ class Lloyd2dProblem {
   bool have_accepted_ = false, just_restarted_ = false;
   double accepted_energy_ = 0;
   std::vector<double> accepted_plain_;
+  int hop_ = 0;
+  // L-BFGS: centroids at the current mesh (valid if have_cells_), memory pairs.
+  bool have_cells_ = false;
+  std::vector<VoronoiCell2d> cells_;
+  std::vector<std::vector<double>> mem_s_, mem_y_;
+  std::vector<double> mem_rho_;
 };
 
 }  // namespace
 
 LloydResult lloyd_optimize_2d(TriMesh2& mesh, const Lloyd2dOptions& options,
-                              const std::function<void(const LloydStep&)>& progress) {
+                              const std::function<void(const LloydStep&)>& progress,
+                              Lloyd2dReport* report) {
   if (mesh.adj.size() != mesh.tris.size()) build_adjacency2(mesh);
   const MeshCheck before = check_mesh(mesh);
   if (!before.ok)
     throw InputError("lloyd_optimize_2d: invalid input mesh: " + first_problem(before));
-  Lloyd2dProblem problem(mesh, options);
-  LloydResult r = lloyd_iterate(problem, options.lloyd, progress);
+  const SizingField2d sizing(mesh, options.sizing);  // from the input mesh, for every run
+  Lloyd2dReport rep;
+  LloydResult r;
+  {
+    Lloyd2dProblem problem(mesh, options, sizing);
+    r = lloyd_iterate(problem, options.lloyd, progress);
+    rep.lloyd_energy = rep.energy = problem.energy();
+    rep.lloyd_iterations = r.iterations;
+  }
+  if (options.hops > 0) {
+    std::mt19937 rng(options.hop_seed);
+    TriMesh2 best = mesh;
+    for (int hop = 1; hop <= options.hops; ++hop) {
+      TriMesh2 trial = best;
+      Lloyd2dProblem problem(trial, options, sizing);
+      problem.kick(options.hop_amount, rng, hop);
+      const LloydResult hr = lloyd_iterate(problem, options.lloyd, progress);
+      const double e = problem.energy();
+      r.iterations += hr.iterations;
+      r.history.insert(r.history.end(), hr.history.begin(), hr.history.end());
+      const bool accept = hr.converged && e < rep.energy;
+      rep.hop_energies.push_back(e);
+      if (accept) {
+        best = std::move(trial);
+        rep.energy = e;
+        ++rep.hops_accepted;
+      }
+      ++rep.hops;
+    }
+    mesh = std::move(best);
+  }
+  if (report) *report = rep;
   const MeshCheck after = check_mesh(mesh);
   if (!after.ok)
     throw InvariantError("lloyd_optimize_2d: mesh invalid after Lloyd: " + first_problem(after));

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <stdexcept>
+#include <string>
 
 #include "core/cvt/lloyd_optimize_2d.h"
 #include "core/pipeline/verify_mesh.h"
@@ -37,7 +38,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
   if (options.progress)
     progress = [&](const LloydStep& s) {
       OptimizeProgress p;
-      p.phase = phase;
+      p.phase = s.hop > 0 ? "hop " + std::to_string(s.hop) : phase;
       p.iteration = s.iteration;
       p.D = s.D;
       p.energy = s.energy;
@@ -55,6 +56,10 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
     lo.sizing = sizing;
     lo.relaxation = options.relaxation;
     lo.anderson_depth = options.anderson_depth;
+    lo.lbfgs_memory = options.lbfgs_memory;
+    lo.hops = options.hops;
+    lo.hop_amount = options.hop_amount;
+    lo.hop_seed = options.seed;
     lr = lloyd_optimize_2d(mesh, lo, progress);
     if (method == "cvdt+swap") flip2d_pass(mesh, {.criterion = FlipCriterion2d::kQuality});
   } else {

@@ -89,5 +89,34 @@ TEST(OptimizeCli, BenchPrintsOneSuccessfulRowPerMeasurement) {
   EXPECT_EQ(out.find("failed"), std::string::npos) << out;
 }
 
+// A 2D mesh through `cvtmesh perturb` and `cvtmesh optimize --hops`: the basin-hopping trials
+// show in the progress and the boundary is kept.
+TEST(OptimizeCli, TwoDimensionalCvtWithBasinHopping) {
+  const std::string dir = testing::temp_dir();
+  const std::string pert = dir + "/washer_pert.msh", out = dir + "/washer_cvt.msh";
+  std::string log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " perturb " + testing::geo_path("washer.geo") +
+                             " --set h0=0.16 --set g=0.16 --cluster -o " + pert,
+                         &log),
+            0)
+      << log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " optimize " + pert + " -o " + out +
+                             " --method cvdt --max-iterations 300 --tolerance 1e-7 --hops 2 "
+                             "--hop-amount 0.3 --seed 3 --lbfgs 5 --sizing uniform",
+                         &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("hop 2"), std::string::npos) << log;
+  const MeshData a = read_mesh(pert), b = read_mesh(out);
+  ASSERT_EQ(a.dim, 2);
+  ASSERT_EQ(b.dim, 2);
+  EXPECT_NO_THROW(verify_optimized(a.tri, b.tri));
+  EXPECT_GT(quality_stats(b.tri, "").q_min, quality_stats(a.tri, "").q_min);
+  EXPECT_NE(
+      testing::run(
+          testing::cli_path() + " optimize " + pert + " -o " + dir + "/y.msh --hop-amount 5", &log),
+      0);
+}
+
 }  // namespace
 }  // namespace cvtmesh

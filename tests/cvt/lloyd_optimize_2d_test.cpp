@@ -5,6 +5,9 @@
 #include <limits>
 
 #include "core/cvt/lloyd_optimize_2d.h"
+#include "core/cvt/voronoi_centroids2d.h"
+#include "core/cvt/sizing_field2d.h"
+#include "core/geometry/tet_geometry.h"
 #include "core/io/read_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/perturb2d.h"
@@ -125,6 +128,124 @@ TEST(Lloyd2d, AcceleratedKeepsAcceptedEnergiesMonotone) {
     EXPECT_EQ(m.point(v)[1], start.point(v)[1]);
   }
   EXPECT_LT(max_nearest_distance(m, d.tri), 1e-3 / 8);
+}
+
+// L-BFGS on the CVT energy: every step lowers F (Armijo line search; exact integrals for a
+// uniform density), every mesh is valid with no inverted triangle, the boundary never moves,
+// and from the perturbed quad it reaches the regular mesh in fewer iterations than Lloyd.
+TEST(Lloyd2d, LbfgsLowersTheEnergyAndReturnsToRegularMesh) {
+  const MeshData d =
+      read_mesh(testing::geo_path("quad.geo"), {.dim = 2, .set_numbers = {{"n", 8}}});
+  TriMesh2 start = d.tri;
+  perturb_2d(start, {.kind = Perturbation2d::kRandom, .seed = 3});
+  Lloyd2dOptions o;
+  o.lloyd.max_iterations = 500;
+  o.lloyd.tolerance = 1e-12;
+  o.sizing.kind = "uniform";
+  TriMesh2 lloyd = start;
+  const LloydResult rl = lloyd_optimize_2d(lloyd, o);
+  ASSERT_TRUE(rl.converged);
+
+  o.lbfgs_memory = 7;
+  TriMesh2 m = start;
+  const std::vector<int> fixed = fixed_vertices(m);
+  std::vector<double> energy;
+  int invalid = 0, inverted = 0;
+  const LloydResult r = lloyd_optimize_2d(m, o, [&](const LloydStep& s) {
+    energy.push_back(s.energy);
+    if (!check_mesh(m).ok) ++invalid;
+    for (int t = 0; t < m.nb_tris(); ++t) {
+      const int* tv = &m.tris[3 * t];
+      if (tv[0] >= 0 && !(tri_area2d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2])) > 0))
+        ++inverted;
+    }
+  });
+  EXPECT_TRUE(r.converged);
+  EXPECT_LT(r.iterations, rl.iterations);
+  EXPECT_EQ(invalid, 0);
+  EXPECT_EQ(inverted, 0);
+  for (int v : fixed) {
+    EXPECT_EQ(m.point(v)[0], start.point(v)[0]);
+    EXPECT_EQ(m.point(v)[1], start.point(v)[1]);
+  }
+  for (std::size_t k = 1; k < energy.size(); ++k)
+    EXPECT_LE(energy[k], energy[k - 1] * (1 + 1e-12)) << "iteration " << k + 1;
+  EXPECT_LT(max_nearest_distance(m, d.tri), 1e-3 / 8);
+}
+
+// Basin hopping on the coarse clustered washer: the first run is exactly plain Lloyd from the
+// same start, the returned mesh's CVT energy is the lowest reached and never above Lloyd's
+// converged energy, every trial mesh is valid with no inverted triangle, the boundary never
+// moves, and the same seed gives the same mesh.
+TEST(Lloyd2d, BasinHoppingNeverEndsAboveLloydsEnergy) {
+  const double h0 = 0.16, g = 0.16;
+  const MeshData d =
+      read_mesh(testing::geo_path("washer.geo"), {.dim = 2, .set_numbers = {{"h0", h0}, {"g", g}}});
+  TriMesh2 start = d.tri;
+  perturb_2d(start, {.kind = Perturbation2d::kCluster});
+  Lloyd2dOptions o;
+  o.lloyd.max_iterations = 2000;
+  o.lloyd.tolerance = 1e-9;
+  o.sizing.kind = "function";
+  o.sizing.function = [&](const double* x) { return h0 + g * (std::hypot(x[0], x[1]) - 1.0); };
+  o.relaxation = 1.5;
+  o.anderson_depth = 5;
+
+  TriMesh2 plain = start;
+  Lloyd2dReport plain_report;
+  ASSERT_TRUE(lloyd_optimize_2d(plain, o, nullptr, &plain_report).converged);
+  EXPECT_EQ(plain_report.hops, 0);
+  EXPECT_EQ(plain_report.energy, plain_report.lloyd_energy);
+
+  o.hops = 4;
+  o.hop_amount = 0.4;
+  o.hop_seed = 7;
+  TriMesh2 m = start;
+  Lloyd2dReport rep;
+  const std::vector<int> fixed = fixed_vertices(m);
+  int invalid = 0, inverted = 0, moved_fixed = 0, hop_steps = 0;
+  lloyd_optimize_2d(
+      m, o,
+      [&](const LloydStep& s) {
+        if (s.hop > 0) ++hop_steps;
+        if (!check_mesh(m).ok) ++invalid;
+        for (int t = 0; t < m.nb_tris(); ++t) {
+          const int* tv = &m.tris[3 * t];
+          if (tv[0] >= 0 && !(tri_area2d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2])) > 0))
+            ++inverted;
+        }
+      },
+      &rep);
+  EXPECT_EQ(invalid, 0);
+  EXPECT_EQ(inverted, 0);
+  EXPECT_GT(hop_steps, 0);
+  for (int v : fixed)
+    if (m.point(v)[0] != start.point(v)[0] || m.point(v)[1] != start.point(v)[1]) ++moved_fixed;
+  EXPECT_EQ(moved_fixed, 0);
+  EXPECT_TRUE(check_mesh(m).ok);
+  // The first run is plain Lloyd from the same start.
+  EXPECT_EQ(rep.lloyd_energy, plain_report.lloyd_energy);
+  EXPECT_EQ(rep.lloyd_iterations, plain_report.lloyd_iterations);
+  // The accepted energy: the minimum over Lloyd's and the hops', never above Lloyd's.
+  ASSERT_EQ(rep.hops, 4);
+  ASSERT_EQ(rep.hop_energies.size(), 4u);
+  EXPECT_LE(rep.energy, plain_report.energy);
+  double lowest = rep.lloyd_energy;
+  for (double e : rep.hop_energies) lowest = std::min(lowest, e);
+  EXPECT_EQ(rep.energy, lowest);
+  // ... and it is the energy of the returned mesh.
+  const SizingField2d sizing(m, o.sizing);
+  double f = 0;
+  for (const VoronoiCell2d& c :
+       voronoi_centroids2d(m, [&](const double* x) { return sizing.density(x); }))
+    f += c.energy;
+  EXPECT_NEAR(f, rep.energy, 1e-12 * rep.energy);
+  // Deterministic for a seed.
+  TriMesh2 again = start;
+  Lloyd2dReport rep2;
+  lloyd_optimize_2d(again, o, nullptr, &rep2);
+  EXPECT_EQ(rep2.energy, rep.energy);
+  EXPECT_EQ(again.xy, m.xy);
 }
 
 }  // namespace

@@ -146,5 +146,34 @@ TEST(Optimize2d, RejectsA3dMethod) {
   EXPECT_THROW(optimize_2d(m, o), std::invalid_argument);
 }
 
+// cvdt with basin hopping: the progress goes through "lloyd", then "hop 1", "hop 2" in order,
+// and the result passes the invariant checks (verify) and keeps the boundary.
+TEST(Optimize2d, WasherCvtWithBasinHopping) {
+  const double h0 = 0.16, g = 0.16;
+  const MeshData d =
+      read_mesh(testing::geo_path("washer.geo"), {.dim = 2, .set_numbers = {{"h0", h0}, {"g", g}}});
+  TriMesh2 m = d.tri;
+  perturb_2d(m, {.kind = Perturbation2d::kRandom, .seed = 2});
+  const TriMesh2 pert = m;
+  OptimizeOptions o;
+  o.method = "cvdt";
+  o.sizing = "function";
+  o.size_function = [&](const double* x) { return h0 + g * (std::hypot(x[0], x[1]) - 1.0); };
+  o.max_iterations = 1000;
+  o.tolerance = 1e-8;
+  o.hops = 2;
+  o.seed = 5;
+  std::vector<std::string> phases;
+  o.progress = [&](const OptimizeProgress& p) {
+    if (phases.empty() || phases.back() != p.phase) phases.push_back(p.phase);
+  };
+  const OptimizeResult r = optimize_2d(m, o);
+  EXPECT_EQ(phases, (std::vector<std::string>{"lloyd", "hop 1", "hop 2"}));
+  EXPECT_TRUE(check_mesh(m).ok);
+  expect_boundary_kept(pert, m);
+  EXPECT_EQ(r.after.nb_inverted, 0);
+  EXPECT_GT(r.after.q_min, r.before.q_min + 0.3);
+}
+
 }  // namespace
 }  // namespace cvtmesh
