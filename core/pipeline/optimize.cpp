@@ -173,6 +173,9 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
   if (data.dim == 3) {
     auto it = methods3().find(o.method);
     if (it == methods3().end()) throw std::invalid_argument("unknown 3D method '" + o.method + "'");
+    if (o.hops > 0 || o.lbfgs_memory > 0)
+      throw std::invalid_argument(
+          "basin hopping (--hops) and L-BFGS (--lbfgs) are 2D options; this mesh is 3D");
     r.before = quality_stats(data.tet, "before");
     const TetMesh input = data.tet;
     it->second(data.tet, o, r);
