@@ -37,6 +37,17 @@ void density_gradient(const TetMesh& m, int t, const std::vector<double>& rho, d
     g[d] = det == 0 ? 0.0 : (r[0] * c0[d] + r[1] * c1[d] + r[2] * c2[d]) / det;
 }
 
+// x is inside the tet p0..p3 with every barycentric coordinate above 1e-6.
+bool clearly_inside(const double* const p[4], const Vec3& x) {
+  const double vol = tet_volume(p[0], p[1], p[2], p[3]);
+  if (!(vol > 0)) return false;
+  const double lim = 1e-6 * vol;
+  return tet_volume(x.data(), p[1], p[2], p[3]) > lim &&
+         tet_volume(p[0], x.data(), p[2], p[3]) > lim &&
+         tet_volume(p[0], p[1], x.data(), p[3]) > lim &&
+         tet_volume(p[0], p[1], p[2], x.data()) > lim;
+}
+
 }  // namespace
 
 CellMesh prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
@@ -63,7 +74,10 @@ CellMesh prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
       const int opp = m.tets[4 * (o / 4) + o % 4];
       ok = insphere(p[0], p[1], p[2], p[3], m.point(opp)) <= 0;
     }
-    if (ok) ok = locate_point(m, ct.data(), t, &c.constrained, 16).status == LocateStatus::kInside;
+    // The circumcentre is in the region if it is clearly inside t (floating-point barycentric
+    // coordinates with a margin far above their rounding error), else if the exact walk reaches it.
+    if (ok && !clearly_inside(p, ct))
+      ok = locate_point(m, ct.data(), t, &c.constrained, 16).status == LocateStatus::kInside;
     c.dual_ok[t] = ok;
     if (ok)
       dual_tet_pieces(m, t, ct, rho, rho ? &c.rho_grad[3 * t] : nullptr, &c.dual_piece[24 * t]);
