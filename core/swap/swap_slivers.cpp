@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <cstdint>
 #include <vector>
 
 #include <unordered_map>
@@ -36,27 +37,19 @@ double global_min(const std::vector<double>& q, const TetMesh& mesh) {
   return m;
 }
 
-// The tets of a cavity with their versions, sorted: an operation that failed on a cavity fails
-// again as long as the same tets are there unchanged (vertices never move here).
-struct Cavity {
-  std::array<std::pair<int, unsigned>, 7> tets;
-  int n = 0;
-  bool operator==(const Cavity& o) const {
-    return n == o.n && std::equal(tets.begin(), tets.begin() + n, o.tets.begin());
+// Local index (into kTetEdge) of the edge (a, b) of tet tv, -1 if it is not one.
+int local_edge(const int* tv, int a, int b) {
+  int ia = -1, ib = -1;
+  for (int k = 0; k < 4; ++k) {
+    if (tv[k] == a) ia = k;
+    if (tv[k] == b) ib = k;
   }
-};
-
-Cavity cavity_of(const std::vector<int>& ids, const std::vector<unsigned>& version) {
-  Cavity c;
-  if (ids.size() > c.tets.size()) throw InvariantError("swap_slivers: cavity larger than 7 tets");
-  c.n = static_cast<int>(ids.size());
-  for (int i = 0; i < c.n; ++i) {  // insertion sort of at most 7 entries
-    const std::pair<int, unsigned> x{ids[i], version[ids[i]]};
-    int j = i;
-    for (; j > 0 && x < c.tets[j - 1]; --j) c.tets[j] = c.tets[j - 1];
-    c.tets[j] = x;
-  }
-  return c;
+  if (ia < 0 || ib < 0) return -1;
+  for (int e = 0; e < 6; ++e)
+    if ((kTetEdge[e][0] == ia && kTetEdge[e][1] == ib) ||
+        (kTetEdge[e][0] == ib && kTetEdge[e][1] == ia))
+      return e;
+  return -1;
 }
 
 }  // namespace
@@ -71,19 +64,43 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   const Measure measure = options.measure;
   const SwapCriterion criterion{measure, options.min_gain};
   const ConstrainedFaces constrained = constrained_faces(mesh);
-  // Edges of constrained triangles can never be removed (a face around them is constrained).
+  // Edges of constrained triangles can never be removed (a face around them is constrained); only
+  // an edge between two vertices of constrained triangles can be one.
   std::unordered_set<EdgeKey, EdgeKeyHash> constrained_edges;
+  std::vector<char> on_constraint(mesh.nb_vertices(), 0);
   for (int f = 0; f < mesh.nb_tris(); ++f)
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k) {
       constrained_edges.insert(edge_key(mesh.tris[3 * f + k], mesh.tris[3 * f + (k + 1) % 3]));
-  // Cavities on which an operation was planned and refused, by edge and by face.
-  std::unordered_map<EdgeKey, Cavity, EdgeKeyHash> failed_edges;
-  std::unordered_map<FaceKey, Cavity, FaceKeyHash> failed_faces;
+      on_constraint[mesh.tris[3 * f + k]] = 1;
+    }
+  // Operations planned and refused, per tet slot: bit e (0..5) for the removal of edge e, bit
+  // 6 + f for the 2-3 flip of face f. A refusal is marked on every tet of the cavity (the same
+  // operation seen from each of them); when a swap creates tets, the marks of their edges and
+  // faces are cleared on every tet around them (those cavities changed). So an operation is
+  // planned again only after its cavity changed: the refusal would be the same (vertices never
+  // move and the decision depends on the cavity only).
+  std::vector<std::uint16_t> refused;
+  auto clear_around = [&](int t) {
+    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    for (int e = 0; e < 6; ++e) {
+      const EdgeRing ring = edge_ring(mesh, t, e, 1 << 20);
+      for (int r : ring.tets) {
+        const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], tv[kTetEdge[e][0]],
+                                  tv[kTetEdge[e][1]]);
+        if (le >= 0) refused[r] &= static_cast<std::uint16_t>(~(1u << le));
+      }
+    }
+    for (int f = 0; f < 4; ++f) {
+      const int o = mesh.adj[4 * static_cast<std::size_t>(t) + f];
+      if (o >= 0) refused[o / 4] &= static_cast<std::uint16_t>(~(1u << (6 + o % 4)));
+    }
+  };
   SwapStats stats;
 
   // Per-slot quality and version (bumped whenever the slot's tet changes).
   std::vector<double> q(static_cast<std::size_t>(mesh.nb_tets()));
   std::vector<unsigned> version(q.size(), 0);
+  refused.assign(q.size(), 0);
   std::vector<int> free_slots;
   for (int t = 0; t < mesh.nb_tets(); ++t) {
     if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0) {
@@ -154,25 +171,27 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       };
       if (options.remove_edges)
         for (int e = 0; e < 6; ++e) {
-          const EdgeKey key = edge_key(tv[kTetEdge[e][0]], tv[kTetEdge[e][1]]);
-          if (constrained_edges.count(key)) continue;
+          if (refused[t] >> e & 1) continue;
+          const int a = tv[kTetEdge[e][0]], b = tv[kTetEdge[e][1]];
+          if (on_constraint[a] && on_constraint[b] && constrained_edges.count(edge_key(a, b)))
+            continue;
           const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
           if (!ring.closed) continue;
-          const Cavity cav = cavity_of(ring.tets, version);
-          const auto it = failed_edges.find(key);
-          if (it != failed_edges.end() && it->second == cav) continue;
           if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
-            failed_edges[key] = cav;
+            for (int r : ring.tets) {
+              const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], a, b);
+              if (le >= 0) refused[r] |= static_cast<std::uint16_t>(1u << le);
+            }
         }
       if (options.flip23)
         for (int f = 0; f < 4; ++f) {
+          if (refused[t] >> (6 + f) & 1) continue;
           const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
           if (behind < 0) continue;
-          const FaceKey key = face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]);
-          const Cavity cav = cavity_of({t, behind / 4}, version);
-          const auto it = failed_faces.find(key);
-          if (it != failed_faces.end() && it->second == cav) continue;
-          if (!consider(plan_flip23(mesh, constrained, t, f))) failed_faces[key] = cav;
+          if (!consider(plan_flip23(mesh, constrained, t, f))) {
+            refused[t] |= static_cast<std::uint16_t>(1u << (6 + f));
+            refused[behind / 4] |= static_cast<std::uint16_t>(1u << (6 + behind % 4));
+          }
         }
       if (!have_best) continue;
 
@@ -185,7 +204,10 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
         q.resize(static_cast<std::size_t>(mesh.nb_tets()));
         version.resize(q.size(), 0);
+        refused.resize(q.size(), 0);
       }
+      for (int id : best.new_ids) refused[id] = 0;
+      for (int id : best.new_ids) clear_around(id);
       for (int id : best.new_ids) {
         ++version[id];
         touch(id, pass + 1);
