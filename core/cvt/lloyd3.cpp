@@ -193,7 +193,10 @@ class Lloyd3Problem {
       s.nb_stuck_faces = rs.nb_stuck;
       s.nb_short_moves = rs.nb_pending;
       delaunay = rs.ok;
-      restored = rs.ok || rs.nb_stuck + rs.nb_pending <= o_.max_flip_leftover * nv;
+      // Faces the flips cannot make Delaunay are next to the boundary where the constrained
+      // Delaunay mesh does not exist without Steiner points (TetGen's rebuild leaves such faces
+      // too): they do not call for a rebuild. Vertices short of their targets do, beyond a few.
+      restored = rs.ok || rs.nb_pending <= o_.max_flip_leftover * nv;
     }
     // After successful flips every unconstrained face is locally Delaunay; TetGen's rebuild
     // leaves a few non-Delaunay faces near the boundary.

@@ -34,10 +34,11 @@ struct Lloyd3Options {
   // mesh after the move (restore_delaunay3.h); rebuild with the backend only when a moved vertex
   // inverted a tet or a non-Delaunay face cannot be flipped. false: always rebuild.
   bool local_flips = true;
-  // When the flips leave at most this many non-Delaunay faces plus vertices short of their
-  // targets (always valid: every move keeps its star positively oriented), the iteration goes on
-  // with that mesh (its cells are clipped where it is not Delaunay) instead of rebuilding; the
-  // last iteration always ends with a constrained Delaunay mesh. Relative to #V.
+  // When the flips leave at most this many vertices short of their targets (relative to #V), or
+  // faces they cannot make Delaunay (the mesh is valid either way: every move keeps its star
+  // positively oriented), the iteration goes on with that mesh (its cells are clipped where it is
+  // not Delaunay) instead of rebuilding; if the last iteration left any, the mesh of the final
+  // points is rebuilt once.
   double max_flip_leftover = 0.01;
 };
 
