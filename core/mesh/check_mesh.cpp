@@ -1,6 +1,7 @@
 #include "core/mesh/check_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -60,9 +61,45 @@ MeshCheck check_mesh(const TetMesh& m) {
     const auto it = constrained.find(face_key(a, b, c));
     return it == constrained.end() ? -1 : it->second;
   };
+  // A parallel pass finds the tets with any problem (and which constrained triangles are faces);
+  // the report is then written in tet order from those only.
+  auto same_face = [&](const int* tv, int f, int t2, int f2) {
+    // t2's vertex opposite the face is none of the face's three, which are all t2's.
+    const int* tv2 = &m.tets[4 * t2];
+    for (int k = 0; k < 3; ++k) {
+      const int a = tv[kTetFace[f][k]];
+      if (a == tv2[f2] || (a != tv2[0] && a != tv2[1] && a != tv2[2] && a != tv2[3])) return false;
+    }
+    return true;
+  };
+  std::vector<char> suspect(nt, 0);
+#pragma omp parallel for schedule(static, 1024)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     if (tv[0] < 0) continue;
+    bool in_range = true;
+    for (int k = 0; k < 4; ++k) in_range = in_range && tv[k] >= 0 && tv[k] < nv;
+    if (!in_range || !positive[t]) {
+      suspect[t] = 1;
+      if (!in_range) continue;
+    }
+    for (int f = 0; f < 4; ++f) {
+      const int ci = constraint_of(tv, f);
+      if (ci >= 0) std::atomic_ref<char>(found[ci]).store(1, std::memory_order_relaxed);
+      const int o = m.adj[4 * t + f];
+      if (o < 0) {
+        if (ci < 0) suspect[t] = 1;
+        continue;
+      }
+      const int t2 = o / 4, f2 = o % 4;
+      if (o >= 4 * nt || m.tets[4 * t2] < 0 || m.adj[o] != 4 * t + f || !same_face(tv, f, t2, f2) ||
+          (m.tet_region[t] != m.tet_region[t2] && ci < 0))
+        suspect[t] = 1;
+    }
+  }
+  for (int t = 0; t < nt; ++t) {
+    if (!suspect[t]) continue;
+    const int* tv = &m.tets[4 * t];
     bool in_range = true;
     for (int k = 0; k < 4; ++k)
       if (tv[k] < 0 || tv[k] >= nv) in_range = false;
@@ -76,7 +113,6 @@ MeshCheck check_mesh(const TetMesh& m) {
     }
     for (int f = 0; f < 4; ++f) {
       const int ci = constraint_of(tv, f);
-      if (ci >= 0) found[ci] = 1;
       const int o = m.adj[4 * t + f];
       if (o < 0) {
         if (ci < 0) {
@@ -93,14 +129,7 @@ MeshCheck check_mesh(const TetMesh& m) {
                        " is not symmetric or points to a dead tet");
         continue;
       }
-      // Same face: t2's vertex opposite the face is none of the face's three, which are all t2's.
-      const int* tv2 = &m.tets[4 * t2];
-      bool same = true;
-      for (int k = 0; k < 3 && same; ++k) {
-        const int a = tv[kTetFace[f][k]];
-        same = a != tv2[f2] && (a == tv2[0] || a == tv2[1] || a == tv2[2] || a == tv2[3]);
-      }
-      if (!same) {
+      if (!same_face(tv, f, t2, f2)) {
         ++r.nb_bad_adjacency;
         problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
                        " are adjacent but do not share the face");
