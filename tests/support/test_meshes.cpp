@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <random>
 #include <filesystem>
 #include <unistd.h>
 
@@ -163,6 +164,19 @@ std::vector<double> bcc_lattice(int n, double a) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) p.insert(p.end(), {(i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a});
+  return p;
+}
+
+std::vector<double> cube_lattice(int n, double jitter) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> p;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
+        const bool interior = i > 0 && i < n && j > 0 && j < n && k > 0 && k < n;
+        for (int c : {i, j, k}) p.push_back(c + (interior && jitter > 0 ? jitter * u(rng) : 0.0));
+      }
   return p;
 }
 

@@ -53,4 +53,8 @@ TetMesh delaunay_of_points(const std::vector<double>& xyz);
 // [0, n*a]^3.
 std::vector<double> bcc_lattice(int n, double a);
 
+// The (n+1)^3 points of the cube lattice of spacing 1 in [0, n]^3, every interior point moved by
+// up to `jitter` in each coordinate (uniformly, a fixed seed) if jitter > 0.
+std::vector<double> cube_lattice(int n, double jitter = 0);
+
 }  // namespace cvtmesh::testing
