@@ -47,6 +47,16 @@ std::string temp_dir() {
   return std::string(d);
 }
 
+std::string unprivileged_prefix() {
+  static const std::string prefix = [] {
+    if (geteuid() != 0) return std::string();
+    const std::string p = "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+    std::string out;
+    return run(p + cli_path() + " --version", &out) == 0 ? p : std::string();
+  }();
+  return prefix;
+}
+
 int run(const std::string& cmd, std::string* output) {
   std::string full = cmd + " 2>&1";
   FILE* p = popen(full.c_str(), "r");
