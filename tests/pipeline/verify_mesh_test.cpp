@@ -98,7 +98,14 @@ TEST(VerifyOptimized, DetectsAVolumeGroupBoundedByOtherTriangles) {
   ASSERT_TRUE(check_mesh(after).ok);
   EXPECT_NE(violation(before, after).find("\"left\") is no longer bounded by the same triangles"),
             std::string::npos)
-      << violation(before, after);
+      << violation(before, after);  // The same with a `before` whose adjacency is not built (the
+                                    // boundaries are then found by
+  // sorting the faces): same answers.
+  TetMesh no_adj = before;
+  no_adj.adj.clear();
+  EXPECT_EQ(violation(no_adj, before), "");
+  EXPECT_NE(violation(no_adj, after).find("is no longer bounded by the same triangles"),
+            std::string::npos);
 }
 
 TEST(VerifyOptimized, DetectsChangedEntitiesAndPointElements) {
