@@ -83,8 +83,11 @@ class TetgenDelaunay3 final : public Delaunay3 {
       ++i;
     }
     // p: PLC; Y: keep the boundary mesh (no Steiner point on it); A: region attributes;
-    // z: 0-based; Q: quiet; M: do not merge coplanar facets.
-    char switches[] = "pYAzQM";
+    // z: 0-based; Q: quiet; M: do not merge coplanar facets; O0: no mesh optimization. TetGen
+    // optimizes a PLC's mesh by default (-O2: flips for quality), which leaves faces that are not
+    // locally Delaunay (~190 on a 5x5x5 lattice, 2 in 3k tets on cube_sphere): the CVT needs the
+    // constrained Delaunay tetrahedralization itself (tests/delaunay/delaunay3_degenerate_test).
+    char switches[] = "pYAzQMO0";
     try {
       tetgen_library().tetrahedralize(switches, &in, &out, nullptr, nullptr);
     } catch (int code) {

@@ -48,10 +48,28 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::commit() {
-  const int fd = ::open(temp_.c_str(), O_RDONLY);
+  const int fd = ::open(temp_.c_str(), O_WRONLY | O_APPEND);
   if (fd < 0)
     throw OutputError("cannot write '" + target_ + "': the temporary output was not created (" +
                       std::strerror(errno) + ")");
+  // Gmsh's and OpenMesh's writers ignore write errors: on a full disk or past the file size limit
+  // they leave a truncated file and report success. Both conditions persist, so one more byte
+  // appended now fails too (it is removed again when it does not).
+  struct stat st;
+  if (::fstat(fd, &st) == 0) {
+    const char probe = '\n';
+    if (::write(fd, &probe, 1) != 1) {
+      const int err = errno;
+      ::close(fd);
+      throw OutputError("cannot write '" + target_ + "': " + std::strerror(err) +
+                        " (the output is incomplete)");
+    }
+    if (::ftruncate(fd, st.st_size) != 0) {
+      const int err = errno;
+      ::close(fd);
+      throw OutputError("cannot write '" + target_ + "': " + std::strerror(err));
+    }
+  }
   const int rc = ::fsync(fd);
   const int err = errno;
   ::close(fd);

@@ -17,7 +17,9 @@ class AtomicFile {
 
   const std::string& temp_path() const { return temp_; }
   const std::string& target() const { return target_; }
-  // fsync the temporary and rename it to the target. Throws OutputError.
+  // Checks that the file system still accepts data (a full disk or the file size limit would
+  // have truncated the temporary: OutputError), fsyncs the temporary and renames it to the
+  // target. Throws OutputError.
   void commit();
 
  private:

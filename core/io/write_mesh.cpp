@@ -3,6 +3,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <map>
 #include <vector>
 
@@ -94,6 +95,21 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
   cleanup();
 }
 
+// Runs a writer on temporaries; its errors name the temporary it was given: they are rethrown
+// naming the file the user asked for.
+template <class F>
+void name_targets(std::initializer_list<const AtomicFile*> files, F&& write) {
+  try {
+    write();
+  } catch (const OutputError& e) {
+    std::string message = e.what();
+    for (const AtomicFile* f : files)
+      for (std::size_t at; (at = message.find(f->temp_path())) != std::string::npos;)
+        message.replace(at, f->temp_path().size(), f->target());
+    throw OutputError(message);
+  }
+}
+
 bool is_tetgen(const std::string& ext) {
   return ext == ".node" || ext == ".ele";
 }
@@ -111,7 +127,9 @@ void write_tetgen_files(const MeshData& data, const std::string& path, const Wri
   for (const std::string* f : {&files.node, &files.ele, &files.facets})
     check_output_allowed(*f, o.policy);
   AtomicFile node(files.node), ele(files.ele), facets(files.facets);
-  write_tetgen(data, {node.temp_path(), ele.temp_path(), facets.temp_path()}, o.fields);
+  name_targets({&node, &ele, &facets}, [&] {
+    write_tetgen(data, {node.temp_path(), ele.temp_path(), facets.temp_path()}, o.fields);
+  });
   node.commit();
   ele.commit();
   facets.commit();
@@ -161,10 +179,12 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
     return;
   }
   AtomicFile out(path);
-  if (own)
-    (*own)(data, out.temp_path(), options.fields);
-  else
-    write_with_gmsh(data, out.temp_path(), path, ext, options);
+  name_targets({&out}, [&] {
+    if (own)
+      (*own)(data, out.temp_path(), options.fields);
+    else
+      write_with_gmsh(data, out.temp_path(), path, ext, options);
+  });
   out.commit();
 }
 

@@ -1,11 +1,15 @@
 #include "core/pipeline/verify_mesh.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "core/geometry/tet_geometry.h"
 #include "core/mesh/check_mesh.h"
@@ -21,19 +25,146 @@ void check_valid(const Mesh& m) {
 }
 
 std::string str(double v) {
-  return std::to_string(v);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// Neumaier's compensated sum: the result is the exactly rounded sum of the terms up to a couple
+// of ulps, whatever their number and order.
+struct CompensatedSum {
+  double sum = 0, c = 0;
+  void add(double x) {
+    const double t = sum + x;
+    c += std::fabs(sum) >= std::fabs(x) ? (sum - t) + x : (x - t) + sum;
+    sum = t;
+  }
+  double value() const { return sum + c; }
+};
+
+// Volumes (areas) of the regions are conserved to 1e-12 relative. Both sums are compensated, so
+// what remains is the rounding of each simplex's volume: a few ulps of edge^3 per tet, |error|
+// summed over the tets ~ 1e-15 * volume for reasonable shapes, and random in sign. The
+// optimizers move interior vertices only and keep the boundary triangles, so the exact volumes
+// are equal; 1e-12 leaves three orders of magnitude for slivers whose edge^3 is much larger than
+// their volume.
+constexpr double kVolumeTolerance = 1e-12;
+
+// The boundary of the cells (tets, or triangles in 2D) of some regions: their facets (triangles,
+// or edges) with no cell of those regions on the other side, as sorted vertex ids, sorted. K:
+// vertices per cell; facet f is the one opposite vertex f, as in `adj` (used when it is built:
+// O(#cells); otherwise all facets are sorted and those found once are kept).
+template <int K>
+std::vector<std::array<int, K - 1>> regions_boundary(const std::vector<int>& cells,
+                                                     const std::vector<int>& cell_region,
+                                                     const std::vector<int>& adj,
+                                                     const std::vector<int>& regions) {
+  auto inside = [&](std::size_t c) {
+    return cells[K * c] >= 0 &&
+           std::find(regions.begin(), regions.end(), cell_region[c]) != regions.end();
+  };
+  auto facet = [&](std::size_t c, int f) {
+    std::array<int, K - 1> k;
+    for (int i = 0, j = 0; i < K; ++i)
+      if (i != f) k[j++] = cells[K * c + i];
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<std::array<int, K - 1>> b;
+  const bool with_adj = adj.size() == cells.size();
+  for (std::size_t c = 0; c < cell_region.size(); ++c)
+    if (inside(c))
+      for (int f = 0; f < K; ++f)
+        if (!with_adj || adj[K * c + f] < 0 ||
+            !inside(static_cast<std::size_t>(adj[K * c + f] / K)))
+          b.push_back(facet(c, f));
+  std::sort(b.begin(), b.end());
+  if (!with_adj) {  // an interior facet was listed twice: drop both
+    std::vector<std::array<int, K - 1>> once;
+    for (std::size_t i = 0; i < b.size();) {
+      std::size_t j = i;
+      while (j < b.size() && b[j] == b[i]) ++j;
+      if (j - i == 1) once.push_back(b[i]);
+      i = j;
+    }
+    b.swap(once);
+  }
+  return b;
+}
+
+std::string group_name(const PhysicalGroup& g) {
+  return "physical group (dim " + std::to_string(g.dim) + ", tag " + std::to_string(g.tag) +
+         (g.name.empty() ? "" : ", \"" + g.name + "\"") + ")";
+}
+
+// Every physical group of `before` is in `after` with the same name and entities, the model's
+// entities keep their boundaries, and the points and lines are the same elements.
+void check_model(const ModelInfo& mb, const ModelInfo& ma) {
+  if (mb.groups.size() != ma.groups.size())
+    throw InvariantError("physical groups changed (" + std::to_string(mb.groups.size()) + " -> " +
+                         std::to_string(ma.groups.size()) + ")");
+  auto sorted = [](std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (const PhysicalGroup& g : mb.groups) {
+    const auto it = std::find_if(ma.groups.begin(), ma.groups.end(), [&](const PhysicalGroup& h) {
+      return h.dim == g.dim && h.tag == g.tag;
+    });
+    if (it == ma.groups.end()) throw InvariantError(group_name(g) + " disappeared");
+    if (it->name != g.name || sorted(it->entities) != sorted(g.entities))
+      throw InvariantError(group_name(g) + " changed its name or entities");
+  }
+  // Boundaries as sets of entities: a periodic surface lists its seam curve twice (+c and -c) in
+  // a model built from a .geo, once after a round trip through a .msh file (as for Gmsh's
+  // optimizer baseline of `cvtmesh compare`); the curve is the same.
+  auto entity_map = [](const ModelInfo& m) {
+    std::map<std::pair<int, int>, std::set<int>> b;
+    for (const ModelEntity& e : m.entities) {
+      auto& s = b[{e.dim, e.tag}];
+      for (int t : e.boundary) s.insert(std::abs(t));
+    }
+    return b;
+  };
+  if (entity_map(mb) != entity_map(ma))
+    throw InvariantError("model entities or their boundaries changed");
+  // Points and lines by entity and nodes (their element tags may be renumbered, as Gmsh does).
+  auto blocks = [](const ModelInfo& m) {
+    std::set<std::tuple<int, int, int, std::vector<int>>> s;
+    for (const ElementBlock& b : m.extra) s.insert({b.dim, b.entity, b.gmsh_type, b.nodes});
+    return s;
+  };
+  if (blocks(mb) != blocks(ma)) throw InvariantError("point or line elements changed");
+}
+
+// Each group of the mesh's dimension is bounded by the same facets before and after (the
+// constrained facets themselves are compared by the caller; this also catches cells moved from
+// one region to another across them). K: vertices per cell.
+template <int K>
+void check_group_boundaries(const std::vector<PhysicalGroup>& groups, int dim,
+                            const std::vector<int>& cells_b, const std::vector<int>& region_b,
+                            const std::vector<int>& adj_b, const std::vector<int>& cells_a,
+                            const std::vector<int>& region_a, const std::vector<int>& adj_a) {
+  for (const PhysicalGroup& g : groups)
+    if (g.dim == dim && regions_boundary<K>(cells_b, region_b, adj_b, g.entities) !=
+                            regions_boundary<K>(cells_a, region_a, adj_a, g.entities))
+      throw InvariantError(group_name(g) + " is no longer bounded by the same " +
+                           (K == 4 ? "triangles" : "edges"));
 }
 
 }  // namespace
 
 std::vector<std::pair<int, double>> region_volumes(const TetMesh& m) {
-  std::map<int, double> vol;
+  std::map<int, CompensatedSum> vol;
   for (int t = 0; t < m.nb_tets(); ++t) {
     const int* v = &m.tets[4 * t];
     if (v[0] < 0) continue;
-    vol[m.tet_region[t]] += tet_volume(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+    vol[m.tet_region[t]].add(
+        tet_volume(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])));
   }
-  return {vol.begin(), vol.end()};
+  std::vector<std::pair<int, double>> r;
+  for (const auto& [region, s] : vol) r.push_back({region, s.value()});
+  return r;
 }
 
 void verify_optimized(const TetMesh& before, const TetMesh& after) {
@@ -66,13 +197,14 @@ void verify_optimized(const TetMesh& before, const TetMesh& after) {
   for (std::size_t i = 0; i < vb.size(); ++i) {
     if (vb[i].first != va[i].first) throw InvariantError("region tags changed");
     // The volume of a region bounded by fixed triangles is fixed; the sums differ by rounding only.
-    const double tol = 1e-10 * std::fabs(vb[i].second);
+    const double tol = kVolumeTolerance * std::fabs(vb[i].second);
     if (std::fabs(vb[i].second - va[i].second) > tol)
       throw InvariantError("volume of region " + std::to_string(vb[i].first) + " changed from " +
                            str(vb[i].second) + " to " + str(va[i].second));
   }
-  if (before.model.groups.size() != after.model.groups.size())
-    throw InvariantError("physical groups changed");
+  check_model(before.model, after.model);
+  check_group_boundaries<4>(before.model.groups, 3, before.tets, before.tet_region, before.adj,
+                            after.tets, after.tet_region, after.adj);
 }
 
 void verify_optimized(const TriMesh2& before, const TriMesh2& after) {
@@ -93,21 +225,26 @@ void verify_optimized(const TriMesh2& before, const TriMesh2& after) {
   };
   if (edge_set(before) != edge_set(after))
     throw InvariantError("boundary or interface edges changed");
-  std::map<int, double> ab, aa;
-  for (int t = 0; t < before.nb_tris(); ++t)
-    if (before.tris[3 * t] >= 0)
-      ab[before.tri_region[t]] +=
-          tri_area2d(before.point(before.tris[3 * t]), before.point(before.tris[3 * t + 1]),
-                     before.point(before.tris[3 * t + 2]));
-  for (int t = 0; t < after.nb_tris(); ++t)
-    if (after.tris[3 * t] >= 0)
-      aa[after.tri_region[t]] +=
-          tri_area2d(after.point(after.tris[3 * t]), after.point(after.tris[3 * t + 1]),
-                     after.point(after.tris[3 * t + 2]));
+  auto areas = [](const TriMesh2& m) {
+    std::map<int, CompensatedSum> a;
+    for (int t = 0; t < m.nb_tris(); ++t)
+      if (m.tris[3 * t] >= 0)
+        a[m.tri_region[t]].add(tri_area2d(m.point(m.tris[3 * t]), m.point(m.tris[3 * t + 1]),
+                                          m.point(m.tris[3 * t + 2])));
+    return a;
+  };
+  const auto ab = areas(before), aa = areas(after);
   if (ab.size() != aa.size()) throw InvariantError("a surface disappeared or appeared");
-  for (const auto& [r, a] : ab)
-    if (std::fabs(aa[r] - a) > 1e-10 * std::fabs(a))
-      throw InvariantError("area of surface " + std::to_string(r) + " changed");
+  for (const auto& [r, a] : ab) {
+    const auto it = aa.find(r);
+    if (it == aa.end()) throw InvariantError("surface " + std::to_string(r) + " disappeared");
+    if (std::fabs(it->second.value() - a.value()) > kVolumeTolerance * std::fabs(a.value()))
+      throw InvariantError("area of surface " + std::to_string(r) + " changed from " +
+                           str(a.value()) + " to " + str(it->second.value()));
+  }
+  check_model(before.model, after.model);
+  check_group_boundaries<3>(before.model.groups, 2, before.tris, before.tri_region, before.adj,
+                            after.tris, after.tri_region, after.adj);
 }
 
 }  // namespace cvtmesh

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/geometry/tet_geometry.h"
 
@@ -96,6 +97,24 @@ std::string measure_name(Measure m) {
 }
 
 double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m) {
+  // One value per tet, whatever the order its vertices are listed in: the rounding of a near-flat
+  // tet's volume and angles depends on that order (a 1e-14 sliver's dihedral angle can come out
+  // as 0 in one order and 1e-8 in another), and the swaps compare qualities of the same tets seen
+  // from different edges (a refused cavity must stay refused). The vertices are sorted by their
+  // coordinates, then the last two exchanged if that was an odd permutation (same orientation).
+  const double* p[4] = {a, b, c, d};
+  bool odd = false;
+  for (int i = 1; i < 4; ++i)
+    for (int j = i; j > 0 && std::lexicographical_compare(p[j], p[j] + 3, p[j - 1], p[j - 1] + 3);
+         --j) {
+      std::swap(p[j], p[j - 1]);
+      odd = !odd;
+    }
+  if (odd) std::swap(p[2], p[3]);
+  a = p[0];
+  b = p[1];
+  c = p[2];
+  d = p[3];
   const double vol = tet_volume(a, b, c, d);
   switch (m) {
     case Measure::kQ: {

@@ -18,7 +18,8 @@ enum class Measure {
 Measure measure_from_string(const std::string& name);
 std::string measure_name(Measure m);
 
-// Tetrahedron a,b,c,d (each 3 doubles). Positive orientation = positive volume.
+// Tetrahedron a,b,c,d (each 3 doubles). Positive orientation = positive volume. Bitwise the same
+// value for every orientation-preserving order of the four vertices (even permutations).
 double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m);
 // Triangle a,b,c; dim = 2 (x,y; counter-clockwise positive) or 3 (x,y,z; always >= 0).
 double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m);

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <set>
+#include <vector>
 
+#include "core/geometry/tet_geometry.h"
 #include "core/quality/quality_stats.h"
 #include "core/quality/quality_table.h"
 
@@ -53,6 +57,38 @@ TEST(TetQuality, FlatTetIsZeroAndInvertedIsNegative) {
   EXPECT_LT(tet_quality(b, a, c, e, Measure::kRadiusRatio), 0);
   EXPECT_LT(tet_quality(b, a, c, e, Measure::kGmshIcn), 0);
   EXPECT_LT(tet_quality(b, a, c, e, Measure::kMinAngle), 0);
+}
+
+TEST(TetQuality, SameBitsForEveryOrientationPreservingVertexOrder) {
+  // A sliver: a skewed square whose corners are 1e-14 above / below z = 0.3. Its volume rounds
+  // differently in different vertex orders; its quality must not (the swaps rely on it).
+  const double e = 1e-14;
+  const double p[4][3] = {
+      {0.1, 0.2, 0.3 + e}, {1.1, 0.23, 0.3 - e}, {1.13, 1.17, 0.3 + e}, {0.07, 1.21, 0.3 - e}};
+  int o[4] = {0, 1, 2, 3};
+  if (!(tet_volume(p[0], p[1], p[2], p[3]) > 0)) std::swap(o[2], o[3]);
+  // The 12 even permutations of o: the rotations of (1,2,3) around each vertex in turn.
+  std::vector<std::array<int, 4>> even;
+  for (int first = 0; first < 4; ++first) {
+    std::array<int, 4> q{};
+    q[0] = o[first];
+    // The remaining three in an order that keeps the permutation even.
+    const int rest[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    for (int r = 0; r < 3; ++r) {
+      for (int k = 0; k < 3; ++k) q[1 + k] = o[rest[first][(r + k) % 3]];
+      even.push_back(q);
+    }
+  }
+  std::set<double> volumes;
+  for (const auto& q : even) volumes.insert(tet_volume(p[q[0]], p[q[1]], p[q[2]], p[q[3]]));
+  EXPECT_GT(volumes.size(), 1u) << "the raw volume does not depend on the order here";
+  for (Measure m : {Measure::kQ, Measure::kRadiusRatio, Measure::kMinAngle, Measure::kMaxAngle,
+                    Measure::kGmshIcn}) {
+    const double ref = tet_quality(p[o[0]], p[o[1]], p[o[2]], p[o[3]], m);
+    for (const auto& q : even)
+      EXPECT_EQ(tet_quality(p[q[0]], p[q[1]], p[q[2]], p[q[3]], m), ref)
+          << measure_name(m) << " order " << q[0] << q[1] << q[2] << q[3];
+  }
 }
 
 TEST(TetQuality, CornerTetDihedralAngles) {

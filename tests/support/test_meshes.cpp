@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <random>
 #include <filesystem>
 #include <unistd.h>
 
@@ -44,6 +45,16 @@ std::string temp_dir() {
   if (made_dirs().empty()) std::atexit(remove_made_dirs);
   made_dirs().push_back(d);
   return std::string(d);
+}
+
+std::string unprivileged_prefix() {
+  static const std::string prefix = [] {
+    if (geteuid() != 0) return std::string();
+    const std::string p = "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+    std::string out;
+    return run(p + cli_path() + " --version", &out) == 0 ? p : std::string();
+  }();
+  return prefix;
 }
 
 int run(const std::string& cmd, std::string* output) {
@@ -163,6 +174,19 @@ std::vector<double> bcc_lattice(int n, double a) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) p.insert(p.end(), {(i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a});
+  return p;
+}
+
+std::vector<double> cube_lattice(int n, double jitter) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> p;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
+        const bool interior = i > 0 && i < n && j > 0 && j < n && k > 0 && k < n;
+        for (int c : {i, j, k}) p.push_back(c + (interior && jitter > 0 ? jitter * u(rng) : 0.0));
+      }
   return p;
 }
 

@@ -19,6 +19,10 @@ std::string shared_path(const std::string& rel);
 std::string temp_dir();
 // Runs a shell command, returns its exit code; stdout+stderr captured into *output if given.
 int run(const std::string& cmd, std::string* output = nullptr);
+// As root: "setpriv --reuid=65534 --regid=65534 --clear-groups " (util-linux), a command prefix
+// that runs the CLI as user nobody, to whom file permissions apply, if nobody can run the CLI
+// where it is built. "" when not root or when that is not possible (tests then skip).
+std::string unprivileged_prefix();
 
 // A mesh from points and tets (each reordered to be positively oriented), one region, adjacency
 // built, and its boundary faces as the constrained triangles (surface 1). Vertices listed in
@@ -52,5 +56,9 @@ TetMesh delaunay_of_points(const std::vector<double>& xyz);
 // Points of the body-centred cubic lattice with spacing a (cube corners and centres) in
 // [0, n*a]^3.
 std::vector<double> bcc_lattice(int n, double a);
+
+// The (n+1)^3 points of the cube lattice of spacing 1 in [0, n]^3, every interior point moved by
+// up to `jitter` in each coordinate (uniformly, a fixed seed) if jitter > 0.
+std::vector<double> cube_lattice(int n, double jitter = 0);
 
 }  // namespace cvtmesh::testing

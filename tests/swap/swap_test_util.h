@@ -76,6 +76,17 @@ inline double total_volume(const TetMesh& m, int region = 0) {
   return v;
 }
 
+// Number of live tets that are not positively oriented by the exact predicate (flat or inverted).
+inline int nb_not_positive(const TetMesh& m) {
+  int n = 0;
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* v = &m.tets[4 * t];
+    if (v[0] >= 0 && !(orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) > 0))
+      ++n;
+  }
+  return n;
+}
+
 // Local index of the face of tet t opposite vertex v (-1 if v is not in t).
 inline int face_opposite(const TetMesh& m, int t, int v) {
   for (int k = 0; k < 4; ++k)

@@ -1,0 +1,164 @@
+// verify_optimized detects each kind of violation: a tampered `after` mesh throws InvariantError
+// naming the problem, the untouched mesh passes.
+#include "core/pipeline/verify_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/mesh/check_mesh.h"
+#include "core/util/error.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+// Two Kuhn cubes side by side, [0,1]^3 (region 1) and [1,2]x[0,1]^2 (region 2): the outer
+// boundary on surface 1, the shared square x = 1 (two triangles) on surface 99; groups "left"
+// (region 1), "right" (region 2) and "walls" (surface 1), and two point elements.
+TetMesh two_cubes() {
+  std::vector<std::array<double, 3>> pts;
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < 4; ++i) pts.push_back({double(c), double(i & 1), double((i >> 1) & 1)});
+  // Vertex (c, y, z) is 4c + y + 2z; the Kuhn cube from (c,0,0) to (c+1,1,1).
+  std::vector<std::array<int, 4>> tets;
+  for (int c = 0; c < 2; ++c) {
+    auto id = [c](int x, int y, int z) { return 4 * (c + x) + y + 2 * z; };
+    const int o = id(0, 0, 0), t = id(1, 1, 1);
+    tets.insert(tets.end(), {{o, id(1, 0, 0), id(1, 1, 0), t},
+                             {o, id(1, 0, 0), id(1, 0, 1), t},
+                             {o, id(0, 1, 0), id(1, 1, 0), t},
+                             {o, id(0, 1, 0), id(0, 1, 1), t},
+                             {o, id(0, 0, 1), id(1, 0, 1), t},
+                             {o, id(0, 0, 1), id(0, 1, 1), t}});
+  }
+  TetMesh m = testing::make_tet_mesh(pts, tets);
+  for (int t = 6; t < 12; ++t) m.tet_region[t] = 2;
+  // The interface x = 1: faces of region-1 tets whose three vertices have x = 1.
+  for (int t = 0; t < 6; ++t)
+    for (int f = 0; f < 4; ++f) {
+      int on = 0;
+      for (int k = 0; k < 3; ++k) on += m.point(m.tets[4 * t + kTetFace[f][k]])[0] == 1.0;
+      if (on == 3) {
+        for (int k = 0; k < 3; ++k) m.tris.push_back(m.tets[4 * t + kTetFace[f][k]]);
+        m.tri_surface.push_back(99);
+      }
+    }
+  m.model.entities = {{0, 1, {}},  {0, 2, {}},      {2, 1, {}},
+                      {2, 99, {}}, {3, 1, {1, 99}}, {3, 2, {1, -99}}};
+  m.model.groups = {{3, 10, "left", {1}}, {3, 11, "right", {2}}, {2, 12, "walls", {1}}};
+  m.model.extra = {{0, 1, 15, {101}, {0}}, {0, 2, 15, {102}, {11}}};
+  return m;
+}
+
+std::string violation(const TetMesh& before, const TetMesh& after) {
+  try {
+    verify_optimized(before, after);
+  } catch (const InvariantError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VerifyOptimized, TheTwoCubesAreValidAndPass) {
+  const TetMesh m = two_cubes();
+  const MeshCheck c = check_mesh(m);
+  ASSERT_TRUE(c.ok) << c.problems.front();
+  ASSERT_EQ(m.nb_tris(), 2 * 2 * 5 + 2);  // 5 outer squares per cube, the interface square
+  const auto v = region_volumes(m);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_NEAR(v[0].second, 1.0, 1e-15);
+  EXPECT_EQ(v[1].second, v[0].second);  // the same shape translated: the same rounding
+  EXPECT_EQ(violation(m, m), "");
+}
+
+TEST(VerifyOptimized, DetectsAMissingOrChangedPhysicalGroup) {
+  const TetMesh before = two_cubes();
+  TetMesh after = before;
+  after.model.groups.pop_back();
+  EXPECT_NE(violation(before, after).find("physical groups changed"), std::string::npos);
+  after = before;
+  after.model.groups[2].tag = 13;  // "walls" renumbered
+  EXPECT_NE(violation(before, after).find("\"walls\") disappeared"), std::string::npos);
+  after = before;
+  after.model.groups[1].entities = {1, 2};
+  EXPECT_NE(violation(before, after).find("\"right\") changed its name or entities"),
+            std::string::npos);
+  after = before;
+  after.model.groups[0].name = "Left";
+  EXPECT_NE(violation(before, after).find("changed its name or entities"), std::string::npos);
+}
+
+TEST(VerifyOptimized, DetectsAVolumeGroupBoundedByOtherTriangles) {
+  // The two regions exchange their tets: same volumes (both 1), same triangles and surfaces, a
+  // valid mesh, but "left" now lies at x in [1,2].
+  const TetMesh before = two_cubes();
+  TetMesh after = before;
+  for (int& r : after.tet_region) r = 3 - r;
+  ASSERT_TRUE(check_mesh(after).ok);
+  EXPECT_NE(violation(before, after).find("\"left\") is no longer bounded by the same triangles"),
+            std::string::npos)
+      << violation(before, after);  // The same with a `before` whose adjacency is not built (the
+                                    // boundaries are then found by
+  // sorting the faces): same answers.
+  TetMesh no_adj = before;
+  no_adj.adj.clear();
+  EXPECT_EQ(violation(no_adj, before), "");
+  EXPECT_NE(violation(no_adj, after).find("is no longer bounded by the same triangles"),
+            std::string::npos);
+}
+
+TEST(VerifyOptimized, DetectsChangedEntitiesAndPointElements) {
+  const TetMesh before = two_cubes();
+  TetMesh after = before;
+  after.model.entities[5].boundary = {1};  // region 2 no longer bounded by the interface
+  EXPECT_NE(violation(before, after).find("entities or their boundaries changed"),
+            std::string::npos);
+  after = before;
+  after.model.extra[1].nodes = {10};
+  EXPECT_NE(violation(before, after).find("point or line elements changed"), std::string::npos);
+  // The seam of a periodic surface listed once instead of as +c and -c, and renumbered element
+  // tags, are not changes.
+  TetMesh seam = before;
+  seam.model.entities[5].boundary = {1, 99, -99};
+  seam.model.extra[0].tags = {7};
+  EXPECT_EQ(violation(seam, before), "");
+}
+
+TEST(VerifyOptimized, DetectsARegionVolumeChangeOfAFewTimes1e12) {
+  // A vertex wrongly classified as interior moves although it is a corner: the triangles keep
+  // their vertex ids, so only the volumes can tell. Moving corner (2,1,1) by 1e-11 along x (out
+  // of the face x = 2, whose two triangles it is on) adds a cone of volume 1e-11 / 3 to region 2.
+  const TetMesh before = two_cubes();
+  TetMesh b2 = before;
+  b2.vclass[11] = VertexClass{3, 2};
+  ASSERT_EQ(b2.point(11)[0], 2.0);
+  TetMesh after = b2;
+  after.point(11)[0] += 1e-11;
+  ASSERT_TRUE(check_mesh(after).ok);
+  const auto vb = region_volumes(b2), va = region_volumes(after);
+  const double rel = (va[1].second - vb[1].second) / vb[1].second;
+  EXPECT_GT(rel, 1e-12);
+  EXPECT_LT(rel, 1e-11);
+  EXPECT_NE(violation(b2, after).find("volume of region 2 changed"), std::string::npos);
+  // A move of the same vertex by 1e-14: below the tolerance.
+  after = b2;
+  after.point(11)[0] += 1e-14;
+  EXPECT_EQ(violation(b2, after), "");
+}
+
+TEST(VerifyOptimized, DetectsAMissingOrChangedSurfaceGroupIn2D) {
+  TriMesh2 before = testing::square2();
+  before.model.entities = {{1, 1, {}}, {1, 2, {}}, {1, 3, {}}, {1, 4, {}}, {2, 1, {1, 2, 3, 4}}};
+  before.model.groups = {{2, 5, "plate", {1}}, {1, 6, "bottom", {1}}};
+  EXPECT_NO_THROW(verify_optimized(before, before));
+  TriMesh2 after = before;
+  after.model.groups.erase(after.model.groups.begin());
+  EXPECT_THROW(verify_optimized(before, after), InvariantError);
+  after = before;
+  after.model.groups[1].entities = {2};
+  EXPECT_THROW(verify_optimized(before, after), InvariantError);
+}
+
+}  // namespace
+}  // namespace cvtmesh
