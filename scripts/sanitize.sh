@@ -3,8 +3,8 @@
 # into build-asan/ and runs them.
 # Usage: scripts/sanitize.sh [subset|full] [gtest filter]
 #   subset (default, what scripts/test.sh runs): cvtmesh_san_tests, the part of the suite listed in
-#          tests/CMakeLists.txt (CVTMESH_SANITIZE_SUBSET); ~5 min from scratch on 2 cores.
-#   full:  the whole cvtmesh_tests; ~8 min more to build.
+#          tests/CMakeLists.txt (CVTMESH_SANITIZE_SUBSET); 7.6 min of CPU from scratch.
+#   full:  the whole cvtmesh_tests (12 more test files to build).
 # Both run the sanitized `cvtmesh` where a test calls the CLI (bad-input corpus, determinism).
 #
 # TetGen (libtet) is loaded with dlopen(RTLD_DEEPBIND) to keep it apart from libgmsh's copy of

@@ -7,8 +7,9 @@ scripts/setup.sh
 scripts/build.sh
 cd "${BUILD_DIR:-build}"
 ctest --output-on-failure -j "$(nproc)" --timeout 900
-# Then a part of the suite built with ASan + UBSan (docs/reliability.md; ~5 min on 2 cores from
-# scratch): CVTMESH_SANITIZE_TESTS=0 skips it, =full runs the whole suite sanitized (~13 min).
+# Then a part of the suite built with ASan + UBSan (docs/reliability.md: 7.6 min of CPU from
+# scratch, 7 min wall on a busy 2-core machine): CVTMESH_SANITIZE_TESTS=0 skips it, =full runs
+# the whole suite sanitized instead (more to build).
 SAN=${CVTMESH_SANITIZE_TESTS:-subset}
 cd - > /dev/null
 case "$SAN" in

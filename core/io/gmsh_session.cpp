@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <mutex>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,12 @@ void gmsh_checked(const std::string& context, const std::function<void()>& f) {
     throw;
   } catch (const InvariantError&) {
     throw;
+  } catch (const std::bad_alloc&) {
+    // Gmsh sizes its arrays by the counts a file declares (found by fuzz/fuzz_msh.cpp): a
+    // corrupt count asks for terabytes.
+    throw InputError(context +
+                     ": out of memory (the file declares more data than it can hold: "
+                     "corrupt counts?)");
   } catch (const std::exception& e) {
     what = e.what();
   } catch (...) {
