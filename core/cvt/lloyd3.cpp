@@ -192,7 +192,8 @@ class Lloyd3Problem {
       s.nb_flips = rs.nb_flips;
       s.nb_stuck_faces = rs.nb_stuck;
       s.nb_short_moves = rs.nb_pending;
-      delaunay = rs.ok;
+      delaunay =
+          rs.nb_stuck == 0;  // short moves leave a Delaunay mesh of the points where they are
       // Faces the flips cannot make Delaunay are next to the boundary where the constrained
       // Delaunay mesh does not exist without Steiner points (TetGen's rebuild leaves such faces
       // too): they do not call for a rebuild. Vertices short of their targets do, beyond a few.

@@ -1,5 +1,7 @@
 #include "core/delaunay/relocate_vertices3.h"
 
+#include <algorithm>
+
 #include "core/delaunay/restore_delaunay3.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/vertex_tets.h"
@@ -28,10 +30,31 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
         pending.push_back(v);
         break;
       }
-  bool delaunay = false;
+  bool delaunay = true;
   for (st.rounds = 1; st.rounds <= max_rounds; ++st.rounds) {
-    const VertexTets star = vertex_tets(m);
-    std::vector<int> left;
+    // The stars of the vertices still to move (all of them at first: every star).
+    VertexTets star;
+    if (st.rounds == 1) {
+      star = vertex_tets(m);
+    } else {
+      std::vector<int> slot(m.nb_vertices(), -1);
+      for (std::size_t i = 0; i < pending.size(); ++i) slot[pending[i]] = static_cast<int>(i);
+      std::vector<std::vector<int>> lists(pending.size());
+      for (int t = 0; t < m.nb_tets(); ++t) {
+        const int* tv = &m.tets[4 * t];
+        if (tv[0] < 0) continue;
+        for (int k = 0; k < 4; ++k)
+          if (slot[tv[k]] >= 0) lists[slot[tv[k]]].push_back(t);
+      }
+      star.offset.assign(m.nb_vertices() + 1, 0);
+      for (std::size_t i = 0; i < pending.size(); ++i)
+        star.offset[pending[i] + 1] = static_cast<int>(lists[i].size());
+      for (int v = 0; v < m.nb_vertices(); ++v) star.offset[v + 1] += star.offset[v];
+      star.tets.resize(star.offset.back());
+      for (std::size_t i = 0; i < pending.size(); ++i)
+        std::copy(lists[i].begin(), lists[i].end(), star.tets.begin() + star.offset[pending[i]]);
+    }
+    std::vector<int> left, moved;
     for (int v : pending) {
       double* x = &m.xyz[3 * v];
       const double from[3] = {x[0], x[1], x[2]};
@@ -45,12 +68,17 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
       }
       if (reached < 0)
         for (int d = 0; d < 3; ++d) x[d] = from[d];
+      else
+        moved.push_back(v);
       if (reached != 0) left.push_back(v);
     }
-    const RestoreDelaunayStats rs = restore_delaunay_by_flips(m, cf);
+    // The first round moved (nearly) everything: test every face; later rounds only the stars
+    // of what they moved.
+    const RestoreDelaunayStats rs =
+        st.rounds == 1 ? restore_delaunay_by_flips(m, cf) : restore_delaunay_around(m, cf, moved);
     st.nb_flips += rs.nb_flips23 + rs.nb_flips32;
-    delaunay = rs.ok;
-    st.nb_stuck = rs.nb_stuck;
+    delaunay = delaunay && rs.ok;  // faces left stuck earlier are not tested again
+    st.nb_stuck += rs.nb_stuck;
     pending.swap(left);
     if (pending.empty()) break;
   }

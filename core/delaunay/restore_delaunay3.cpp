@@ -25,31 +25,13 @@ bool non_delaunay(const TetMesh& m, const ConstrainedFaces& cf, int t, int f) {
 
 }  // namespace
 
-RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFaces& cf) {
-  RestoreDelaunayStats st;
+namespace {
+
+// Lawson flips from the faces in `stack` until no unconstrained face reachable from them is
+// non-Delaunay or none can be flipped.
+void flip_until_delaunay(TetMesh& m, const ConstrainedFaces& cf,
+                         std::vector<std::pair<int, int>>& stack, RestoreDelaunayStats& st) {
   const int nt = m.nb_tets();
-  bool inverted = false;
-#pragma omp parallel for schedule(static, 1024) reduction(|| : inverted)
-  for (int t = 0; t < nt; ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] >= 0 && orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0)
-      inverted = true;
-  }
-  if (inverted) {
-    st.inverted = true;
-    return st;
-  }
-  // Work stack of (tet, face); entries are re-checked when popped (slots get reused).
-  std::vector<std::pair<int, int>> stack;
-  std::vector<unsigned char> bad(nt, 0);  // bit f: face f is to be flipped (tested in parallel)
-#pragma omp parallel for schedule(static, 1024)
-  for (int t = 0; t < nt; ++t)
-    if (m.tets[4 * t] >= 0)
-      for (int f = 0; f < 4; ++f)
-        if (m.adj[4 * t + f] > 4 * t + f && non_delaunay(m, cf, t, f)) bad[t] |= 1u << f;
-  for (int t = 0; t < nt; ++t)
-    for (int f = 0; f < 4; ++f)
-      if (bad[t] >> f & 1) stack.push_back({t, f});
   std::vector<int> free_slots;
   std::vector<std::pair<int, int>> stuck;
   auto push_tets = [&](const std::vector<int>& ids) {
@@ -101,6 +83,53 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFace
   if (!stack.empty()) ++st.nb_stuck;
   if (!free_slots.empty()) compact_tets(m);
   st.ok = st.nb_stuck == 0;
+}
+
+}  // namespace
+
+RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFaces& cf) {
+  RestoreDelaunayStats st;
+  const int nt = m.nb_tets();
+  bool inverted = false;
+#pragma omp parallel for schedule(static, 1024) reduction(|| : inverted)
+  for (int t = 0; t < nt; ++t) {
+    const int* v = &m.tets[4 * t];
+    if (v[0] >= 0 && orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0)
+      inverted = true;
+  }
+  if (inverted) {
+    st.inverted = true;
+    return st;
+  }
+  // Work stack of (tet, face); entries are re-checked when popped (slots get reused).
+  std::vector<std::pair<int, int>> stack;
+  std::vector<unsigned char> bad(nt, 0);  // bit f: face f is to be flipped (tested in parallel)
+#pragma omp parallel for schedule(static, 1024)
+  for (int t = 0; t < nt; ++t)
+    if (m.tets[4 * t] >= 0)
+      for (int f = 0; f < 4; ++f)
+        if (m.adj[4 * t + f] > 4 * t + f && non_delaunay(m, cf, t, f)) bad[t] |= 1u << f;
+  for (int t = 0; t < nt; ++t)
+    for (int f = 0; f < 4; ++f)
+      if (bad[t] >> f & 1) stack.push_back({t, f});
+  flip_until_delaunay(m, cf, stack, st);
+  return st;
+}
+
+RestoreDelaunayStats restore_delaunay_around(TetMesh& m, const ConstrainedFaces& cf,
+                                             const std::vector<int>& moved) {
+  RestoreDelaunayStats st;
+  std::vector<char> is_moved(m.nb_vertices(), 0);
+  for (int v : moved) is_moved[v] = 1;
+  std::vector<std::pair<int, int>> stack;
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* tv = &m.tets[4 * t];
+    if (tv[0] < 0 || !(is_moved[tv[0]] || is_moved[tv[1]] || is_moved[tv[2]] || is_moved[tv[3]]))
+      continue;
+    for (int f = 0; f < 4; ++f)
+      if (non_delaunay(m, cf, t, f)) stack.push_back({t, f});
+  }
+  flip_until_delaunay(m, cf, stack, st);
   return st;
 }
 

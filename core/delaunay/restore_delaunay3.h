@@ -3,6 +3,8 @@
 // the reflex edge of degree three), decided by exact predicates. Much cheaper than rebuilding the
 // tetrahedralization when few faces changed. Constrained faces are never flipped.
 #pragma once
+#include <vector>
+
 #include "core/mesh/tet_mesh.h"
 #include "core/swap/constrained_faces.h"
 
@@ -22,5 +24,12 @@ struct RestoreDelaunayStats {
 // compacted on exit. The mesh stays valid (positively oriented, same constrained triangles and
 // region volumes) whether or not `ok`.
 RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& mesh, const ConstrainedFaces& constrained);
+
+// The same, when only the vertices `moved` changed since the mesh was valid and constrained
+// Delaunay except where noted: only the faces of their stars are tested at first (then whatever
+// the flips touch), and the orientation check is left to the caller (each move kept its star
+// positively oriented).
+RestoreDelaunayStats restore_delaunay_around(TetMesh& mesh, const ConstrainedFaces& constrained,
+                                             const std::vector<int>& moved);
 
 }  // namespace cvtmesh
