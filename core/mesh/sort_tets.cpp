@@ -1,0 +1,82 @@
+#include "core/mesh/sort_tets.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace cvtmesh {
+namespace {
+
+// Spreads the low 21 bits of x to every third bit.
+std::uint64_t spread3(std::uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffULL;
+  x = (x | x << 16) & 0x1f0000ff0000ffULL;
+  x = (x | x << 8) & 0x100f00f00f00f00fULL;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+  x = (x | x << 2) & 0x1249249249249249ULL;
+  return x;
+}
+
+}  // namespace
+
+void sort_tets_spatially(TetMesh& m) {
+  const int nt = m.nb_tets();
+  double lo[3], hi[3];
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = std::numeric_limits<double>::infinity();
+    hi[d] = -lo[d];
+  }
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], m.xyz[3 * v + d]);
+      hi[d] = std::max(hi[d], m.xyz[3 * v + d]);
+    }
+  double scale[3];
+  for (int d = 0; d < 3; ++d) scale[d] = hi[d] > lo[d] ? 2097151.0 / (hi[d] - lo[d]) : 0.0;
+  std::vector<std::pair<std::uint64_t, int>> key;
+  key.reserve(nt);
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &m.tets[4 * static_cast<std::size_t>(t)];
+    if (tv[0] < 0) continue;
+    std::uint64_t code = 0;
+    for (int d = 0; d < 3; ++d) {
+      double c = 0;
+      for (int k = 0; k < 4; ++k) c += m.xyz[3 * static_cast<std::size_t>(tv[k]) + d];
+      const auto q = static_cast<std::uint64_t>((0.25 * c - lo[d]) * scale[d]);
+      code |= spread3(q) << d;
+    }
+    key.push_back({code, t});
+  }
+  std::sort(key.begin(), key.end());
+  const int live = static_cast<int>(key.size());
+  std::vector<int> new_id(static_cast<std::size_t>(nt), -1);
+  for (int i = 0; i < live; ++i) new_id[key[i].second] = i;
+  const bool has_adj = m.adj.size() == m.tets.size();
+  const bool has_tags = m.tet_tags.size() == static_cast<std::size_t>(nt);
+  std::vector<int> tets(4 * static_cast<std::size_t>(live)), adj, region(live);
+  std::vector<std::size_t> tags;
+  if (has_adj) adj.resize(tets.size());
+  if (has_tags) tags.resize(live);
+  for (int i = 0; i < live; ++i) {
+    const int t = key[i].second;
+    for (int k = 0; k < 4; ++k) {
+      tets[4 * static_cast<std::size_t>(i) + k] = m.tets[4 * static_cast<std::size_t>(t) + k];
+      if (has_adj) {
+        const int o = m.adj[4 * static_cast<std::size_t>(t) + k];
+        adj[4 * static_cast<std::size_t>(i) + k] =
+            (o < 0 || new_id[o / 4] < 0) ? -1 : 4 * new_id[o / 4] + o % 4;
+      }
+    }
+    region[i] = m.tet_region[t];
+    if (has_tags) tags[i] = m.tet_tags[t];
+  }
+  m.tets.swap(tets);
+  m.tet_region.swap(region);
+  if (has_adj) m.adj.swap(adj);
+  if (has_tags) m.tet_tags.swap(tags);
+}
+
+}  // namespace cvtmesh
