@@ -299,6 +299,9 @@ LloydResult lloyd_optimize_3d(TetMesh& mesh, const Lloyd3Options& options,
                               const std::function<void(const LloydStep&)>& progress) {
   const MeshCheck c = check_mesh(mesh);
   if (!c.ok) throw InvariantError("lloyd_optimize_3d: invalid input mesh: " + c.problems.front());
+  // Free vertices in space order (fixed ones keep their ids): a tet's points are then close in
+  // memory too.
+  sort_free_vertices_spatially(mesh);
   Lloyd3Problem problem(mesh, options);
   LloydResult r = lloyd_iterate(problem, options.lloyd, progress);
   problem.finish();

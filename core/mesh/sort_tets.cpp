@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/mesh/renumber_vertices.h"
+
 namespace cvtmesh {
 namespace {
 
@@ -20,11 +22,16 @@ std::uint64_t spread3(std::uint64_t x) {
   return x;
 }
 
-}  // namespace
+// The Morton code of x in the box [lo, lo + 2097151 / scale].
+std::uint64_t morton(const double* x, const double* lo, const double* scale) {
+  std::uint64_t code = 0;
+  for (int d = 0; d < 3; ++d)
+    code |= spread3(static_cast<std::uint64_t>((x[d] - lo[d]) * scale[d])) << d;
+  return code;
+}
 
-void sort_tets_spatially(TetMesh& m) {
-  const int nt = m.nb_tets();
-  double lo[3], hi[3];
+void bounding_box(const TetMesh& m, double* lo, double* scale) {
+  double hi[3];
   for (int d = 0; d < 3; ++d) {
     lo[d] = std::numeric_limits<double>::infinity();
     hi[d] = -lo[d];
@@ -34,20 +41,42 @@ void sort_tets_spatially(TetMesh& m) {
       lo[d] = std::min(lo[d], m.xyz[3 * v + d]);
       hi[d] = std::max(hi[d], m.xyz[3 * v + d]);
     }
-  double scale[3];
   for (int d = 0; d < 3; ++d) scale[d] = hi[d] > lo[d] ? 2097151.0 / (hi[d] - lo[d]) : 0.0;
+}
+
+}  // namespace
+
+void sort_free_vertices_spatially(TetMesh& m) {
+  const int nv = m.nb_vertices();
+  double lo[3], scale[3];
+  bounding_box(m, lo, scale);
+  std::vector<int> slots;
+  std::vector<std::pair<std::uint64_t, int>> key;
+  for (int v = 0; v < nv; ++v)
+    if (m.vclass[v].dim == 3) {
+      slots.push_back(v);
+      key.push_back({morton(m.point(v), lo, scale), v});
+    }
+  std::sort(key.begin(), key.end());
+  std::vector<int> new_id(nv);
+  for (int v = 0; v < nv; ++v) new_id[v] = v;
+  for (std::size_t i = 0; i < key.size(); ++i) new_id[key[i].second] = slots[i];
+  permute_vertices(m, new_id);
+}
+
+void sort_tets_spatially(TetMesh& m) {
+  const int nt = m.nb_tets();
+  double lo[3], scale[3];
+  bounding_box(m, lo, scale);
   std::vector<std::pair<std::uint64_t, int>> key;
   key.reserve(nt);
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * static_cast<std::size_t>(t)];
     if (tv[0] < 0) continue;
-    std::uint64_t code = 0;
-    for (int d = 0; d < 3; ++d) {
-      double c = 0;
-      for (int k = 0; k < 4; ++k) c += m.xyz[3 * static_cast<std::size_t>(tv[k]) + d];
-      const auto q = static_cast<std::uint64_t>((0.25 * c - lo[d]) * scale[d]);
-      code |= spread3(q) << d;
-    }
+    double c[3] = {0, 0, 0};
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 4; ++k) c[d] += 0.25 * m.xyz[3 * static_cast<std::size_t>(tv[k]) + d];
+    const std::uint64_t code = morton(c, lo, scale);
     key.push_back({code, t});
   }
   std::sort(key.begin(), key.end());
