@@ -55,5 +55,48 @@ TEST(SortTets, KeepsTheTetsAndTheAdjacencyAndImprovesLocality) {
   EXPECT_LT(gap(m), gap_before);
 }
 
+// Free vertices change ids only among themselves; fixed vertices keep id and position; every
+// node tag keeps its point; the tets are the same point sets.
+TEST(SortFreeVertices, RenumbersOnlyFreeVerticesAndKeepsTagsWithPoints) {
+  MeshData d = testing::cube_sphere(0.1, 0.08);
+  TetMesh m = d.tet;
+  ASSERT_EQ(m.node_tags.size(), static_cast<std::size_t>(m.nb_vertices()));
+  const TetMesh before = m;
+  sort_free_vertices_spatially(m);
+  ASSERT_TRUE(check_mesh(m).ok);
+  int moved = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    if (before.vclass[v].dim < 3) {
+      EXPECT_EQ(m.vclass[v].dim, before.vclass[v].dim) << v;
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(m.point(v)[k], before.point(v)[k]) << v;
+      EXPECT_EQ(m.node_tags[v], before.node_tags[v]) << v;
+    } else {
+      EXPECT_EQ(m.vclass[v].dim, 3) << v;
+      moved += m.node_tags[v] != before.node_tags[v];
+    }
+  }
+  EXPECT_GT(moved, 0);
+  auto by_tag = [](const TetMesh& mm) {
+    std::vector<std::tuple<std::size_t, double, double, double>> r;
+    for (int v = 0; v < mm.nb_vertices(); ++v)
+      r.push_back({mm.node_tags[v], mm.point(v)[0], mm.point(v)[1], mm.point(v)[2]});
+    std::sort(r.begin(), r.end());
+    return r;
+  };
+  EXPECT_EQ(by_tag(m), by_tag(before));
+  auto tet_points = [](const TetMesh& mm) {
+    std::vector<std::array<std::size_t, 4>> r;
+    for (int t = 0; t < mm.nb_tets(); ++t) {
+      std::array<std::size_t, 4> k;
+      for (int j = 0; j < 4; ++j) k[j] = mm.node_tags[mm.tets[4 * t + j]];
+      std::sort(k.begin(), k.end());
+      r.push_back(k);
+    }
+    std::sort(r.begin(), r.end());
+    return r;
+  };
+  EXPECT_EQ(tet_points(m), tet_points(before));
+}
+
 }  // namespace
 }  // namespace cvtmesh
