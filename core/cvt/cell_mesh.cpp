@@ -16,9 +16,6 @@ double coordinate_eps(const TetMesh& m) {
   return 1e-12 * std::max(1.0, emax);
 }
 
-namespace {
-
-// The gradient of the linear interpolant of rho over tet t.
 void density_gradient(const TetMesh& m, int t, const std::vector<double>& rho, double* g) {
   const int* v = &m.tets[4 * t];
   const double* p0 = m.point(v[0]);
@@ -36,6 +33,8 @@ void density_gradient(const TetMesh& m, int t, const std::vector<double>& rho, d
   for (int d = 0; d < 3; ++d)
     g[d] = det == 0 ? 0.0 : (r[0] * c0[d] + r[1] * c1[d] + r[2] * c2[d]) / det;
 }
+
+namespace {
 
 // x is inside the tet p0..p3 with every barycentric coordinate above 1e-6.
 bool clearly_inside(const double* const p[4], const Vec3& x) {

@@ -33,6 +33,10 @@ struct CellMesh {
 CellMesh prepare_cell_mesh(const TetMesh& mesh, const std::vector<double>* rho = nullptr,
                            bool unconstrained_delaunay = false);
 
+// The gradient g (3 values) of the linear interpolant over tet t of the per-vertex values rho
+// (0 for a flat tet).
+void density_gradient(const TetMesh& mesh, int t, const std::vector<double>& rho, double* g);
+
 // 1e-12 times the largest absolute coordinate (at least 1e-12).
 double coordinate_eps(const TetMesh& mesh);
 

@@ -1,7 +1,6 @@
 #include "core/cvt/lloyd3.h"
 
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <string>
 
@@ -102,7 +101,7 @@ class Lloyd3Problem {
     std::vector<char> wanted(nv, 0), clipped(nv, 1);
     for (int v = 0; v < nv; ++v) {
       const bool has_star = star.offset[v] < star.offset[v + 1];
-      wanted[v] = has_star && (m_.vclass[v].dim == 3 || (o_.compute_energy && !getenv("NOE")));
+      wanted[v] = has_star && (m_.vclass[v].dim == 3 || o_.compute_energy);
     }
 #pragma omp parallel
     {

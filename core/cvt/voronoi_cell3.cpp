@@ -44,32 +44,9 @@ namespace {
 // The P1 density of tet t written around z: rho(x) = r0 + g.(x - z).
 void linear_density(const TetMesh& m, int t, const std::vector<double>& rho, const Vec3& z,
                     double& r0, Vec3& g) {
+  density_gradient(m, t, rho, g.data());
   const int* v = &m.tets[4 * t];
   const double* p0 = m.point(v[0]);
-  double E[3][3], rhs[3];
-  for (int k = 0; k < 3; ++k) {
-    const double* pk = m.point(v[k + 1]);
-    for (int d = 0; d < 3; ++d) E[k][d] = pk[d] - p0[d];
-    rhs[k] = rho[v[k + 1]] - rho[v[0]];
-  }
-  const double det = E[0][0] * (E[1][1] * E[2][2] - E[1][2] * E[2][1]) -
-                     E[0][1] * (E[1][0] * E[2][2] - E[1][2] * E[2][0]) +
-                     E[0][2] * (E[1][0] * E[2][1] - E[1][1] * E[2][0]);
-  if (det == 0) {
-    g = {0, 0, 0};
-  } else {
-    // g = E^-1 rhs via the adjugate.
-    const double inv[3][3] = {{(E[1][1] * E[2][2] - E[1][2] * E[2][1]) / det,
-                               (E[0][2] * E[2][1] - E[0][1] * E[2][2]) / det,
-                               (E[0][1] * E[1][2] - E[0][2] * E[1][1]) / det},
-                              {(E[1][2] * E[2][0] - E[1][0] * E[2][2]) / det,
-                               (E[0][0] * E[2][2] - E[0][2] * E[2][0]) / det,
-                               (E[0][2] * E[1][0] - E[0][0] * E[1][2]) / det},
-                              {(E[1][0] * E[2][1] - E[1][1] * E[2][0]) / det,
-                               (E[0][1] * E[2][0] - E[0][0] * E[2][1]) / det,
-                               (E[0][0] * E[1][1] - E[0][1] * E[1][0]) / det}};
-    for (int r = 0; r < 3; ++r) g[r] = inv[r][0] * rhs[0] + inv[r][1] * rhs[1] + inv[r][2] * rhs[2];
-  }
   r0 = rho[v[0]] + g[0] * (z[0] - p0[0]) + g[1] * (z[1] - p0[1]) + g[2] * (z[2] - p0[2]);
 }
 

@@ -32,28 +32,7 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
       }
   bool delaunay = true;
   for (st.rounds = 1; st.rounds <= max_rounds; ++st.rounds) {
-    // The stars of the vertices still to move (all of them at first: every star).
-    VertexTets star;
-    if (st.rounds == 1) {
-      star = vertex_tets(m);
-    } else {
-      std::vector<int> slot(m.nb_vertices(), -1);
-      for (std::size_t i = 0; i < pending.size(); ++i) slot[pending[i]] = static_cast<int>(i);
-      std::vector<std::vector<int>> lists(pending.size());
-      for (int t = 0; t < m.nb_tets(); ++t) {
-        const int* tv = &m.tets[4 * t];
-        if (tv[0] < 0) continue;
-        for (int k = 0; k < 4; ++k)
-          if (slot[tv[k]] >= 0) lists[slot[tv[k]]].push_back(t);
-      }
-      star.offset.assign(m.nb_vertices() + 1, 0);
-      for (std::size_t i = 0; i < pending.size(); ++i)
-        star.offset[pending[i] + 1] = static_cast<int>(lists[i].size());
-      for (int v = 0; v < m.nb_vertices(); ++v) star.offset[v + 1] += star.offset[v];
-      star.tets.resize(star.offset.back());
-      for (std::size_t i = 0; i < pending.size(); ++i)
-        std::copy(lists[i].begin(), lists[i].end(), star.tets.begin() + star.offset[pending[i]]);
-    }
+    const VertexTets star = vertex_tets(m);
     std::vector<int> left, moved;
     for (int v : pending) {
       double* x = &m.xyz[3 * v];

@@ -57,28 +57,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
     r.lloyd_energy.push_back(s.energy);
-    r.seconds_lloyd_delaunay += s.seconds_delaunay;
-    r.nb_lloyd_rebuilds += s.rebuilt;
-    if (!o.progress) return;
-    OptimizeProgress p;
-    p.phase = "lloyd";
-    p.iteration = s.iteration;
-    p.D = s.D;
-    p.energy = s.energy;
-    const QualityStats q = quality_stats(mesh, "");
-    p.q_min = q.q_min;
-    p.q_avg = q.q_avg;
-    p.restarted = s.restarted;
-    p.seconds_cells = s.seconds_cells;
-    p.seconds_delaunay = s.seconds_delaunay;
-    p.seconds_other = s.seconds_move + s.seconds_check;
-    p.nb_dual_cells = s.nb_dual_cells;
-    p.nb_clipped_cells = s.nb_clipped_cells;
-    p.nb_flips = s.nb_flips;
-    p.rebuilt = s.rebuilt;
-    p.nb_stuck_faces = s.nb_stuck_faces;
-    p.nb_short_moves = s.nb_short_moves;
-    o.progress(p);
+    if (o.progress) o.progress(lloyd_progress(s, "lloyd", quality_stats(mesh, "")));
   });
   r.seconds_lloyd = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.iterations = lr.iterations;
@@ -156,6 +135,28 @@ const std::map<std::string, Method3>& methods3() {
 }
 
 }  // namespace
+
+OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
+                                const QualityStats& q) {
+  OptimizeProgress p;
+  p.phase = phase;
+  p.iteration = s.iteration;
+  p.D = s.D;
+  p.energy = s.energy;
+  p.q_min = q.q_min;
+  p.q_avg = q.q_avg;
+  p.restarted = s.restarted;
+  p.seconds_cells = s.seconds_cells;
+  p.seconds_delaunay = s.seconds_delaunay;
+  p.seconds_other = s.seconds_move + s.seconds_check;
+  p.nb_dual_cells = s.nb_dual_cells;
+  p.nb_clipped_cells = s.nb_clipped_cells;
+  p.nb_flips = s.nb_flips;
+  p.rebuilt = s.rebuilt;
+  p.nb_stuck_faces = s.nb_stuck_faces;
+  p.nb_short_moves = s.nb_short_moves;
+  return p;
+}
 
 std::vector<std::string> methods_for_dim(int dim) {
   std::vector<std::string> out;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cvt/lloyd.h"
 #include "core/io/mesh_data.h"
 #include "core/quality/quality_stats.h"
 
@@ -70,14 +71,17 @@ struct OptimizeResult {
   std::string method;  // the method that ran (a 3D default name maps to "cvdt" in 2D)
   // 3D Lloyd phase: the energy before each iteration's move, and where its time went.
   std::vector<double> lloyd_energy;
-  double seconds_lloyd = 0, seconds_lloyd_delaunay = 0;
-  int nb_lloyd_rebuilds = 0;  // iterations that rebuilt the tetrahedralization (no flips)
+  double seconds_lloyd = 0;
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces
 // kept exactly). Throws std::invalid_argument for an unknown method or one that does not apply
 // to the mesh's dimension, InputError for a mesh it cannot handle, InvariantError on a bug.
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& options);
+
+// The progress report of one Lloyd-type iteration (2D or 3D) in `phase`, with the mesh's quality q.
+OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
+                                const QualityStats& q);
 
 // The methods available for a dimension (2 or 3), in menu order.
 std::vector<std::string> methods_for_dim(int dim);

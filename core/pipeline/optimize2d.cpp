@@ -37,16 +37,8 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
   std::function<void(const LloydStep&)> progress;
   if (options.progress)
     progress = [&](const LloydStep& s) {
-      OptimizeProgress p;
-      p.phase = s.hop > 0 ? "hop " + std::to_string(s.hop) : phase;
-      p.iteration = s.iteration;
-      p.D = s.D;
-      p.energy = s.energy;
-      const QualityStats q = quality_stats(mesh, "");
-      p.q_min = q.q_min;
-      p.q_avg = q.q_avg;
-      p.restarted = s.restarted;
-      options.progress(p);
+      options.progress(lloyd_progress(s, s.hop > 0 ? "hop " + std::to_string(s.hop) : phase,
+                                      quality_stats(mesh, "")));
     };
 
   LloydResult lr;
