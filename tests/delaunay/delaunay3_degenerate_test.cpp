@@ -65,14 +65,7 @@ TEST(Delaunay3Degenerate, CubeLatticeWithInteriorPointsMovedBy1e14) {
 }
 
 TEST(Delaunay3Degenerate, PointsExactlyOnHullFacesAndEdges) {
-  std::vector<double> p = cube_lattice(3);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j <= 3; ++j) {
-      p.insert(p.end(), {i + 0.5, double(j), 0.0});
-      p.insert(p.end(), {double(j), i + 0.5, 0.0});
-    }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) p.insert(p.end(), {i + 0.5, j + 0.5, 3.0});
+  const std::vector<double> p = testing::cube_lattice_with_hull_points();
   expect_valid_delaunay(p, "points on the hull");
 }
 

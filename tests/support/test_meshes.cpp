@@ -190,4 +190,16 @@ std::vector<double> cube_lattice(int n, double jitter) {
   return p;
 }
 
+std::vector<double> cube_lattice_with_hull_points() {
+  std::vector<double> p = cube_lattice(3);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j <= 3; ++j) {
+      p.insert(p.end(), {i + 0.5, double(j), 0.0});
+      p.insert(p.end(), {double(j), i + 0.5, 0.0});
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) p.insert(p.end(), {i + 0.5, j + 0.5, 3.0});
+  return p;
+}
+
 }  // namespace cvtmesh::testing

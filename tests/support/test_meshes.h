@@ -61,4 +61,8 @@ std::vector<double> bcc_lattice(int n, double a);
 // up to `jitter` in each coordinate (uniformly, a fixed seed) if jitter > 0.
 std::vector<double> cube_lattice(int n, double jitter = 0);
 
+// cube_lattice(3) plus points exactly on its hull: the midpoints of the bottom face's grid edges
+// and the centres of the top face's squares.
+std::vector<double> cube_lattice_with_hull_points();
+
 }  // namespace cvtmesh::testing

@@ -29,11 +29,6 @@ using testing::ring_mesh;
 using testing::tet_vertex_sets;
 using testing::total_volume;
 
-double min_quality(const TetMesh& m, Measure measure) {
-  const auto q = element_qualities(m, measure);
-  return *std::min_element(q.begin(), q.end());
-}
-
 // n^3 unit cubes, each split into the 6 Kuhn tets around its diagonal (a conforming mesh: every
 // tet is congruent, all 8 corners of each cube cospherical).
 TetMesh kuhn_grid(int n) {
@@ -76,13 +71,13 @@ void expect_swaps_terminate_and_keep_invariants(TetMesh m, const std::string& wh
     SwapOptions o;
     o.measure = measure;
     o.max_passes = 100;
-    const double min_before = min_quality(m, measure);
+    const double min_before = testing::global_min_quality(m, measure);
     const SwapStats s = swap_slivers(m, o);
     EXPECT_LT(s.passes, o.max_passes) << "did not converge";
     const MeshCheck c = check_mesh(m);
     EXPECT_TRUE(c.ok) << c.problems.front();
     EXPECT_EQ(nb_not_positive(m), 0);
-    EXPECT_GE(min_quality(m, measure), min_before);
+    EXPECT_GE(testing::global_min_quality(m, measure), min_before);
     EXPECT_EQ(boundary_faces(m), boundary_faces(start));
     EXPECT_EQ(constrained_triples(m), constrained_triples(start));
     EXPECT_EQ(m.xyz, start.xyz);
@@ -127,14 +122,7 @@ TEST(SwapDegenerate, LatticeWithInteriorPointsMovedBy1e14) {
 TEST(SwapDegenerate, PointsExactlyOnHullFacesAndEdges) {
   // The lattice plus the midpoints of the hull edges of the bottom face's squares and the centres
   // of the squares of the top face: points exactly on boundary edges and faces.
-  std::vector<double> p = cube_lattice(3);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j <= 3; ++j) {
-      p.insert(p.end(), {i + 0.5, double(j), 0.0});
-      p.insert(p.end(), {double(j), i + 0.5, 0.0});
-    }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) p.insert(p.end(), {i + 0.5, j + 0.5, 3.0});
+  const std::vector<double> p = testing::cube_lattice_with_hull_points();
   expect_swaps_terminate_and_keep_invariants(testing::delaunay_of_points(p), "points on the hull");
 }
 

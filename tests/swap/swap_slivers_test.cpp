@@ -19,11 +19,6 @@ using testing::constrained_triples;
 using testing::total_volume;
 using testing::unoptimized_cube_sphere;
 
-double global_min(const TetMesh& m, Measure measure) {
-  const auto q = element_qualities(m, measure);
-  return *std::min_element(q.begin(), q.end());
-}
-
 std::string first_problem(const MeshCheck& c) {
   return c.problems.empty() ? "" : c.problems[0];
 }
@@ -38,7 +33,7 @@ void check_swap_invariants(Measure measure) {
   const auto outer_before = boundary_faces(m);
   const auto xyz_before = m.xyz;
   const double vol = total_volume(m);
-  const double min_before = global_min(m, measure);
+  const double min_before = testing::global_min_quality(m, measure);
 
   SwapOptions o;
   o.measure = measure;
@@ -47,11 +42,11 @@ void check_swap_invariants(Measure measure) {
   const MeshCheck c1 = check_mesh(m);
   EXPECT_TRUE(c1.ok) << first_problem(c1);
   EXPECT_EQ(c1.nb_inverted, 0);
-  EXPECT_GT(global_min(m, Measure::kQ), 0.0);
+  EXPECT_GT(testing::global_min_quality(m, Measure::kQ), 0.0);
   // Never lowers the minimum quality of the criterion's measure.
-  EXPECT_GE(global_min(m, measure), min_before);
+  EXPECT_GE(testing::global_min_quality(m, measure), min_before);
   EXPECT_EQ(s.min_before, min_before);
-  EXPECT_EQ(s.min_after, global_min(m, measure));
+  EXPECT_EQ(s.min_after, testing::global_min_quality(m, measure));
   // Boundary triangles unchanged, both the constrained list and the faces of the tet complex.
   EXPECT_EQ(constrained_triples(m), tris_before);
   EXPECT_EQ(boundary_faces(m), outer_before);
@@ -105,13 +100,13 @@ TEST(SwapSlivers, TwoRegionsNeverMixAndTheInterfaceIsKept) {
   std::map<int, double> vol;
   for (int r : {1, 2}) vol[r] = total_volume(m, r);
   const auto tris_before = constrained_triples(m);
-  const double min_before = global_min(m, Measure::kQ);
+  const double min_before = testing::global_min_quality(m, Measure::kQ);
   const SwapStats s = swap_slivers(m);
   EXPECT_GT(s.nb_flip32 + s.nb_edge_removals, 0);
   const MeshCheck c = check_mesh(m);  // interfaces present, no unlisted face between regions
   EXPECT_TRUE(c.ok) << first_problem(c);
   EXPECT_EQ(constrained_triples(m), tris_before);
-  EXPECT_GE(global_min(m, Measure::kQ), min_before);
+  EXPECT_GE(testing::global_min_quality(m, Measure::kQ), min_before);
   for (int r : {1, 2}) EXPECT_NEAR(total_volume(m, r), vol[r], 1e-12 * vol[r]) << "region " << r;
 }
 
@@ -129,11 +124,11 @@ TEST(SwapSlivers, LeavesTheKuhnCubeValid) {
   // Every edge of the 6-tet cube is on the boundary except the diagonal (ring of 6 whose
   // faces are all interior): whatever it does, the cube stays a valid mesh of the cube.
   TetMesh m = testing::cube6();
-  const double min_before = global_min(m, Measure::kQ);
+  const double min_before = testing::global_min_quality(m, Measure::kQ);
   swap_slivers(m);
   EXPECT_TRUE(check_mesh(m).ok);
   EXPECT_NEAR(total_volume(m), 1.0, 1e-12);
-  EXPECT_GE(global_min(m, Measure::kQ), min_before);
+  EXPECT_GE(testing::global_min_quality(m, Measure::kQ), min_before);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/face_key.h"
 #include "core/mesh/tet_mesh.h"
+#include "core/quality/quality_stats.h"
 #include "tests/support/test_meshes.h"
 
 namespace cvtmesh::testing {
@@ -77,6 +78,12 @@ inline double total_volume(const TetMesh& m, int region = 0) {
 }
 
 // Number of live tets that are not positively oriented by the exact predicate (flat or inverted).
+// The smallest quality of the mesh in `measure`.
+inline double global_min_quality(const TetMesh& m, Measure measure) {
+  const auto q = element_qualities(m, measure);
+  return *std::min_element(q.begin(), q.end());
+}
+
 inline int nb_not_positive(const TetMesh& m) {
   int n = 0;
   for (int t = 0; t < m.nb_tets(); ++t) {
