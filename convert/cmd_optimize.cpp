@@ -32,8 +32,8 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
                 "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
       ->check(CLI::Range(0, 20));
   c->add_option("--lbfgs", o.lbfgs_memory,
-                "2D CVT: minimise the CVT energy by L-BFGS with this memory (e.g. 7) instead of "
-                "Lloyd's step (0 = Lloyd)")
+                "CVT (2D and 3D): minimise the CVT energy by L-BFGS with this memory (e.g. 5) "
+                "instead of Lloyd's step (0 = Lloyd); reaches a given energy in fewer iterations")
       ->check(CLI::Range(0, 50));
   c->add_option("--hops", o.hops,
                 "2D CVT: basin-hopping trials after Lloyd converges (0 = off): kick every free "

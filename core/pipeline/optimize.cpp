@@ -53,6 +53,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.lloyd.tolerance = o.tolerance;
   lo.relaxation = o.relaxation;
   lo.anderson_depth = o.anderson_depth;
+  lo.lbfgs_memory = o.lbfgs_memory;
   lo.sizing = sizing3(mesh, o);
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
@@ -174,9 +175,8 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
   if (data.dim == 3) {
     auto it = methods3().find(o.method);
     if (it == methods3().end()) throw std::invalid_argument("unknown 3D method '" + o.method + "'");
-    if (o.hops > 0 || o.lbfgs_memory > 0)
-      throw std::invalid_argument(
-          "basin hopping (--hops) and L-BFGS (--lbfgs) are 2D options; this mesh is 3D");
+    if (o.hops > 0)
+      throw std::invalid_argument("basin hopping (--hops) is a 2D option; this mesh is 3D");
     r.before = quality_stats(data.tet, "before");
     const TetMesh input = data.tet;
     it->second(data.tet, o, r);

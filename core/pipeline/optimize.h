@@ -36,13 +36,14 @@ struct OptimizeOptions {
   double tolerance = 1e-5;   // Lloyd stop on the normalised D (see core/cvt/lloyd.h)
   double relaxation = 1.5;   // Lloyd over-relaxation omega in (0, 2); 1 = the paper's plain step
   int anderson_depth = 5;    // Anderson acceleration of Lloyd (0 = off: the paper's plain Lloyd)
-  // 2D CVT only (ignored in 3D): basin hopping on the CVT energy after Lloyd has converged
+  // 2D CVT only (refused in 3D): basin hopping on the CVT energy after Lloyd has converged
   // (Lloyd2dOptions::hops): `hops` random kicks of radius hop_amount * H, each followed by Lloyd
   // to convergence, keeping the configuration of lowest energy; random stream from `seed`.
   int hops = 0;
   double hop_amount = 0.3;
-  // 2D CVT only: minimise the CVT energy by L-BFGS with this memory instead of Lloyd's step
-  // (Lloyd2dOptions::lbfgs_memory; 0 = Lloyd, then relaxation/anderson_depth apply).
+  // CVT (2D and 3D): minimise the CVT energy by L-BFGS with this memory instead of Lloyd's step
+  // (Lloyd2dOptions / Lloyd3Options::lbfgs_memory; 0 = Lloyd, then relaxation/anderson_depth
+  // apply).
   int lbfgs_memory = 0;
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).

@@ -184,6 +184,44 @@ TEST(Lloyd3, AndersonAcceleratedAcceptedEnergiesNeverIncrease) {
   EXPECT_TRUE(check_mesh(d.tet).ok);
 }
 
+// L-BFGS on the CVT energy (Lloyd3Options::lbfgs_memory): every accepted configuration has an
+// energy no higher than the previous accepted one (rejected line-search trials are flagged), the
+// mesh stays valid, and it reaches the energy plain Lloyd has after N iterations in far fewer.
+TEST(Lloyd3, LbfgsAcceptedEnergiesNeverIncreaseAndBeatPlainLloyd) {
+  const MeshData init = testing::cube_sphere(0.14, 0.1);
+  const int n_plain = 30;
+  TetMesh plain = init.tet;
+  Lloyd3Options po;
+  po.lloyd.max_iterations = n_plain;
+  po.lloyd.tolerance = 0;
+  std::vector<double> plain_energy;
+  lloyd_optimize_3d(plain, po, [&](const LloydStep& s) { plain_energy.push_back(s.energy); });
+  ASSERT_EQ(plain_energy.size(), static_cast<std::size_t>(n_plain));
+
+  TetMesh m = init.tet;
+  Lloyd3Options o = po;
+  o.lbfgs_memory = 5;
+  std::vector<double> accepted, all;
+  lloyd_optimize_3d(m, o, [&](const LloydStep& s) {
+    all.push_back(s.energy);
+    if (!s.restarted) accepted.push_back(s.energy);
+  });
+  ASSERT_EQ(all.size(), static_cast<std::size_t>(n_plain));
+  // The first step is Lloyd's (taken whole); after it every accepted trial passed Armijo.
+  for (std::size_t i = 2; i < accepted.size(); ++i)
+    EXPECT_LE(accepted[i], accepted[i - 1]) << "accepted step " << i;
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems.front());
+  int reached = -1;
+  for (std::size_t i = 0; i < all.size() && reached < 0; ++i)
+    if (all[i] <= plain_energy.back()) reached = static_cast<int>(i) + 1;
+  std::printf("plain Lloyd energy after %d iterations %.9g; L-BFGS reaches it at %d, ends at %.9g\n",
+              n_plain, plain_energy.back(), reached, all.back());
+  ASSERT_GT(reached, 0);
+  EXPECT_LE(reached, n_plain / 2);
+  EXPECT_LT(all.back(), plain_energy.back());
+}
+
 }  // namespace
 }  // namespace cvtmesh
 
