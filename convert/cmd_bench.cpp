@@ -217,8 +217,7 @@ void register_bench(CLI::App& app) {
              fill_quality(r, d.tet);
            }));
            auto run_method = [&](const std::string& label, const std::string& m, double omega,
-                                 int anderson, int max_it = -1, double tol = -1,
-                                 int lbfgs = -1) {
+                                 int anderson, int max_it = -1, double tol = -1, int lbfgs = -1) {
              rows.push_back(run_isolated(in.name, label, [&](Row& r) {
                MeshData d = read_mesh(in.path, init_ro);
                r.nb_tets_in = d.tet.nb_tets();
@@ -273,22 +272,24 @@ void register_bench(CLI::App& app) {
          // Accelerated vs plain Lloyd: iterations to reach the plain run's final energy.
          if (bo->plain) {
            std::printf(
-               "\n| input | plain Lloyd: iterations, final energy | accelerated run | iterations to "
+               "\n| input | plain Lloyd: iterations, final energy | accelerated run | iterations "
+               "to "
                "reach it (1e-6 rel.) | ratio |\n|---|---|---|---|---:|\n");
            for (const auto& p : rows) {
              if (!p.ok || p.method.rfind("cvdt, plain", 0) != 0 || p.energy.empty()) continue;
              const double target = p.energy.back() * (1 + 1e-6);
              for (const auto& a : rows) {
-               if (!a.ok || a.input != p.input || a.method.find(", as many iterations") == std::string::npos)
+               if (!a.ok || a.input != p.input ||
+                   a.method.find(", as many iterations") == std::string::npos)
                  continue;
                int reached = -1;
                for (std::size_t i = 0; i < a.energy.size() && reached < 0; ++i)
                  if (a.energy[i] <= target) reached = static_cast<int>(i) + 1;
                char rs[64] = "not reached";
                if (reached > 0) std::snprintf(rs, sizeof rs, "%d of %zu", reached, a.energy.size());
-               std::printf("| %s | %zu, %.9g | %s | %s | %s |\n", p.input.c_str(),
-                           p.energy.size(), p.energy.back(),
-                           a.method.substr(0, a.method.find(", as many")).c_str(), rs,
+               std::printf("| %s | %zu, %.9g | %s | %s | %s |\n", p.input.c_str(), p.energy.size(),
+                           p.energy.back(), a.method.substr(0, a.method.find(", as many")).c_str(),
+                           rs,
                            reached > 0 ? std::to_string(static_cast<double>(reached) /
                                                         static_cast<double>(p.energy.size()))
                                              .substr(0, 5)

@@ -32,6 +32,9 @@ struct CellMesh {
 // faces with a constraint are tested.
 CellMesh prepare_cell_mesh(const TetMesh& mesh, const std::vector<double>* rho = nullptr,
                            bool unconstrained_delaunay = false);
+// The same into `out`, reusing its buffers (the Lloyd loop calls it every iteration).
+void prepare_cell_mesh(const TetMesh& mesh, const std::vector<double>* rho,
+                       bool unconstrained_delaunay, CellMesh& out);
 
 // The gradient g (3 values) of the linear interpolant over tet t of the per-vertex values rho
 // (0 for a flat tet).

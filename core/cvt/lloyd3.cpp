@@ -89,16 +89,13 @@ class Lloyd3Problem {
     const auto t0 = Clock::now();
     evaluate(s);
     s.seconds_cells = seconds_since(t0);
-    std::vector<double> target =
-        o_.lbfgs_memory > 0 ? lbfgs_targets(s) : lloyd_targets(s);
+    std::vector<double> target = o_.lbfgs_memory > 0 ? lbfgs_targets(s) : lloyd_targets(s);
     s.seconds_move = seconds_since(t0) - s.seconds_cells;
     move_to(target, s);
     return s;
   }
 
-  int nb_steiner() const {
-    return nb_steiner_;
-  }
+  int nb_steiner() const { return nb_steiner_; }
 
   // The last iteration may have left a few faces non-Delaunay or vertices short of their targets
   // (see Lloyd3Options::max_flip_leftover): rebuild the constrained Delaunay mesh of the points.
@@ -120,7 +117,7 @@ class Lloyd3Problem {
     // Tets in space order: the per-tet and per-star passes below then hit the cache (flips
     // scatter new tets over free slots; every few iterations is enough).
     if (iteration_++ % 4 == 0) sort_tets_spatially(m_);
-    cm_ = prepare_cell_mesh(m_, &rho_, delaunay_known_);
+    prepare_cell_mesh(m_, &rho_, delaunay_known_, cm_);
     const VertexStar& star = cm_.star;
     std::vector<CellIntegrals> cells(nv);
     std::vector<char> wanted(nv, 0), clipped(nv, 1);

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/geometry/predicates.h"
+#include "core/mesh/vertex_tets.h"
 #include "core/swap/apply_swap.h"
 #include "core/swap/compact_tets.h"
 #include "core/swap/flip23.h"
@@ -87,12 +88,13 @@ void flip_until_delaunay(TetMesh& m, const ConstrainedFaces& cf,
 
 }  // namespace
 
-RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFaces& cf) {
+RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFaces& cf,
+                                               bool check_orientation) {
   RestoreDelaunayStats st;
   const int nt = m.nb_tets();
   bool inverted = false;
-#pragma omp parallel for schedule(static, 1024) reduction(|| : inverted)
-  for (int t = 0; t < nt; ++t) {
+#pragma omp parallel for schedule(static, 1024) reduction(|| : inverted) if (check_orientation)
+  for (int t = 0; t < (check_orientation ? nt : 0); ++t) {
     const int* v = &m.tets[4 * t];
     if (v[0] >= 0 && orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0)
       inverted = true;
@@ -118,14 +120,18 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFace
 
 RestoreDelaunayStats restore_delaunay_around(TetMesh& m, const ConstrainedFaces& cf,
                                              const std::vector<int>& moved) {
+  const VertexTets star = vertex_tets_of(m, moved);
+  std::vector<int> tets;
+  for (int v : moved) tets.insert(tets.end(), star.begin_of(v), star.end_of(v));
+  return restore_delaunay_in(m, cf, tets);
+}
+
+RestoreDelaunayStats restore_delaunay_in(TetMesh& m, const ConstrainedFaces& cf,
+                                         const std::vector<int>& tets) {
   RestoreDelaunayStats st;
-  std::vector<char> is_moved(m.nb_vertices(), 0);
-  for (int v : moved) is_moved[v] = 1;
   std::vector<std::pair<int, int>> stack;
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* tv = &m.tets[4 * t];
-    if (tv[0] < 0 || !(is_moved[tv[0]] || is_moved[tv[1]] || is_moved[tv[2]] || is_moved[tv[3]]))
-      continue;
+  for (int t : tets) {
+    if (m.tets[4 * t] < 0) continue;
     for (int f = 0; f < 4; ++f)
       if (non_delaunay(m, cf, t, f)) stack.push_back({t, f});
   }

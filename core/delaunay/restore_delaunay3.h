@@ -23,7 +23,9 @@ struct RestoreDelaunayStats {
 // face is non-locally-Delaunay or none of the remaining can be flipped (stuck); dead slots are
 // compacted on exit. The mesh stays valid (positively oriented, same constrained triangles and
 // region volumes) whether or not `ok`.
-RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& mesh, const ConstrainedFaces& constrained);
+// check_orientation = false: the caller guarantees that every tet is positively oriented.
+RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& mesh, const ConstrainedFaces& constrained,
+                                               bool check_orientation = true);
 
 // The same, when only the vertices `moved` changed since the mesh was valid and constrained
 // Delaunay except where noted: only the faces of their stars are tested at first (then whatever
@@ -31,5 +33,9 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& mesh, const ConstrainedF
 // positively oriented).
 RestoreDelaunayStats restore_delaunay_around(TetMesh& mesh, const ConstrainedFaces& constrained,
                                              const std::vector<int>& moved);
+
+// The same, starting from the faces of the live tets `tets` (ids of the current mesh).
+RestoreDelaunayStats restore_delaunay_in(TetMesh& mesh, const ConstrainedFaces& constrained,
+                                         const std::vector<int>& tets);
 
 }  // namespace cvtmesh

@@ -21,4 +21,8 @@ struct VertexTets {
 // Stays valid while only coordinates change; rebuild it after a change of connectivity.
 VertexTets vertex_tets(const TetMesh& mesh);
 
+// The stars of `vertices` only (the other vertices' are empty): one pass over the tets, for a few
+// vertices of a large mesh.
+VertexTets vertex_tets_of(const TetMesh& mesh, const std::vector<int>& vertices);
+
 }  // namespace cvtmesh

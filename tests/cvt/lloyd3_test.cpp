@@ -215,8 +215,9 @@ TEST(Lloyd3, LbfgsAcceptedEnergiesNeverIncreaseAndBeatPlainLloyd) {
   int reached = -1;
   for (std::size_t i = 0; i < all.size() && reached < 0; ++i)
     if (all[i] <= plain_energy.back()) reached = static_cast<int>(i) + 1;
-  std::printf("plain Lloyd energy after %d iterations %.9g; L-BFGS reaches it at %d, ends at %.9g\n",
-              n_plain, plain_energy.back(), reached, all.back());
+  std::printf(
+      "plain Lloyd energy after %d iterations %.9g; L-BFGS reaches it at %d, ends at %.9g\n",
+      n_plain, plain_energy.back(), reached, all.back());
   ASSERT_GT(reached, 0);
   EXPECT_LE(reached, n_plain / 2);
   EXPECT_LT(all.back(), plain_energy.back());
