@@ -26,15 +26,29 @@ py::object json_loads(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
+// The Lloyd acceleration and minimiser knobs of OptimizeOptions.
+struct Acceleration {
+  int anderson = OptimizeOptions{}.anderson_depth;
+  int lbfgs = OptimizeOptions{}.lbfgs_memory;
+  int hops = OptimizeOptions{}.hops;
+  double hop_amount = OptimizeOptions{}.hop_amount;
+};
+
 GmshOptimizeOptions options_from(const std::string& method, int max_iterations, double tolerance,
-                                 double relaxation, const std::string& sizing, unsigned seed,
-                                 int dim, bool quality_views, bool generate,
-                                 const py::object& progress) {
+                                 double relaxation, const Acceleration& acc,
+                                 const std::string& sizing, unsigned seed, int dim,
+                                 bool quality_views, bool generate, const py::object& progress) {
   GmshOptimizeOptions o;
   o.optimize.method = method;
   o.optimize.max_iterations = max_iterations;
   o.optimize.tolerance = tolerance;
   o.optimize.relaxation = relaxation;
+  if (acc.anderson < 0 || acc.lbfgs < 0 || acc.hops < 0 || !(acc.hop_amount > 0))
+    throw py::value_error("anderson, lbfgs and hops must be >= 0, hop_amount > 0");
+  o.optimize.anderson_depth = acc.anderson;
+  o.optimize.lbfgs_memory = acc.lbfgs;
+  o.optimize.hops = acc.hops;
+  o.optimize.hop_amount = acc.hop_amount;
   o.optimize.sizing = sizing;
   o.optimize.seed = seed;
   o.dim = dim;
@@ -91,9 +105,10 @@ PYBIND11_MODULE(cvtmesh, m) {
   m.def(
       "optimize",
       [](const std::string& method, int max_iterations, double tolerance, double relaxation,
-         const std::string& sizing, unsigned seed, int dim, bool quality_views, bool generate,
-         const py::object& progress) {
-        const auto o = options_from(method, max_iterations, tolerance, relaxation, sizing, seed,
+         int anderson, int lbfgs, int hops, double hop_amount, const std::string& sizing,
+         unsigned seed, int dim, bool quality_views, bool generate, const py::object& progress) {
+        const auto o = options_from(method, max_iterations, tolerance, relaxation,
+                                    Acceleration{anderson, lbfgs, hops, hop_amount}, sizing, seed,
                                     dim, quality_views, generate, progress);
         return json_loads(gmsh_optimize(o).to_json());
       },
@@ -101,13 +116,18 @@ PYBIND11_MODULE(cvtmesh, m) {
       py::arg("max_iterations") = OptimizeOptions{}.max_iterations,
       py::arg("tolerance") = OptimizeOptions{}.tolerance,
       py::arg("relaxation") = OptimizeOptions{}.relaxation,
+      py::arg("anderson") = OptimizeOptions{}.anderson_depth,
+      py::arg("lbfgs") = OptimizeOptions{}.lbfgs_memory, py::arg("hops") = OptimizeOptions{}.hops,
+      py::arg("hop_amount") = OptimizeOptions{}.hop_amount,
       py::arg("sizing") = OptimizeOptions{}.sizing, py::arg("seed") = 0u, py::arg("dim") = -1,
       py::arg("quality_views") = false, py::arg("generate") = false,
       py::arg("progress") = py::none(),
       "Optimizes the mesh of the current Gmsh model in place: every volume (3D) or every planar\n"
       "surface (2D) with method (one of methods(dim); '' = the first, the paper's best) —\n"
       "dim=-1 picks the highest meshed dimension. Entities, physical groups and\n"
-      "lower-dimensional elements stay. relaxation: Lloyd over-relaxation in (0, 2). generate=True "
+      "lower-dimensional elements stay. relaxation: Lloyd over-relaxation in (0, 2); anderson:\n"
+      "Anderson depth (0 = plain Lloyd); lbfgs: L-BFGS memory (minimise the CVT energy by\n"
+      "L-BFGS instead of Lloyd's step; 0 = off); hops, hop_amount: 2D basin hopping. generate=True "
       "meshes the model first if it has no mesh;\n"
       "quality_views=True adds per-element views (Q, radius ratio, min angle). progress, if\n"
       "given, is called with a dict (phase, iteration, D, energy, q_min, q_avg).\n"

@@ -130,6 +130,23 @@ class InProcessScripting(unittest.TestCase):
         q = cvtmesh.quality()
         self.assertAlmostEqual(q["average_quality"], table["after"]["average_quality"], places=12)
 
+    def test_lbfgs_and_plain_lloyd_are_reachable(self):
+        # L-BFGS (lbfgs=5) and the paper's plain Lloyd (anderson=0, relaxation=1) both run on the
+        # current model and improve it; basin hopping is 2D only and refused on this 3D mesh.
+        for kwargs in ({"lbfgs": 5}, {"anderson": 0, "relaxation": 1.0}):
+            gmsh.model.mesh.clear()
+            gmsh.model.mesh.generate(3)
+            table = cvtmesh.optimize(method="cvdt", max_iterations=8, tolerance=0, **kwargs)
+            self.assertEqual(table["iterations"], 8, kwargs)
+            self.assertGreater(table["after"]["average_quality"],
+                               table["before"]["average_quality"], kwargs)
+        boundary = nodes(2)
+        with self.assertRaises(ValueError):
+            cvtmesh.optimize(method="cvdt", hops=2)
+        with self.assertRaises(ValueError):
+            cvtmesh.optimize(method="cvdt", lbfgs=-1)
+        self.assertEqual(nodes(2), boundary)
+
     def test_errors_are_exceptions_and_leave_the_model_alone(self):
         before = nodes(3)
         with self.assertRaises(ValueError):
