@@ -13,6 +13,10 @@ namespace {
 const std::string kMethod = kGroup + "/0Method";
 const std::string kIterations = kGroup + "/1Max iterations";
 const std::string kTolerance = kGroup + "/2Tolerance";
+const std::string kStep = kGroup + "/2Lloyd step";  // sorts before Tolerance
+// The Lloyd step: accelerated (relaxation + Anderson, the default), L-BFGS on the CVT energy, or
+// the paper's plain step.
+const std::vector<std::string> kSteps = {"accelerated", "L-BFGS", "plain (paper)"};
 const std::string kSizing = kGroup + "/3Sizing";
 const std::string kViews = kGroup + "/4Quality views";
 const std::string kDim = kGroup + "/dim";
@@ -95,6 +99,18 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   if (preset.tolerance >= 0) tol.number = preset.tolerance;
   tree.set(tol);
 
+  OnelabParam step = input(kStep, 0,
+                           "CVT (Lloyd) step: accelerated = over-relaxed Lloyd with Anderson "
+                           "mixing; L-BFGS = quasi-Newton on the CVT energy (fewest iterations); "
+                           "plain = the paper's Lloyd step");
+  for (std::size_t i = 0; i < kSteps.size(); ++i) {
+    step.choices.push_back(static_cast<double>(i));
+    step.labels.push_back(kSteps[i]);
+  }
+  if (auto cur = tree.number(kStep)) step.number = *cur;
+  step.attributes.clear();
+  tree.set(step);
+
   OnelabParam sizing = input(kSizing, 0,
                              "Density: mesh = keep the input's local edge length (grading), "
                              "uniform = constant size");
@@ -161,6 +177,17 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
   const auto s = static_cast<std::size_t>(std::lround(tree.number(kSizing).value_or(0)));
   o.optimize.sizing = kSizings[std::min(s, kSizings.size() - 1)];
   o.quality_views = tree.number(kViews).value_or(1) != 0;
+  switch (std::lround(tree.number(kStep).value_or(0))) {
+    case 1:
+      o.optimize.lbfgs_memory = 5;
+      break;
+    case 2:
+      o.optimize.anderson_depth = 0;
+      o.optimize.relaxation = 1.0;
+      break;
+    default:
+      break;
+  }
   o.dim = dim ? dim : -1;
   return o;
 }

@@ -91,7 +91,8 @@ class Onelab(unittest.TestCase):
         self.assertAlmostEqual(p[res + "3Q avg (init)"][0], before["average_quality"], places=9)
         self.assertAlmostEqual(p[res + "4Q min"][0], after["q_min"], places=9)
         # The panel's inputs are in the tree too.
-        for name in ("0Method", "1Max iterations", "2Tolerance", "3Sizing", "4Quality views"):
+        for name in ("0Method", "1Max iterations", "2Lloyd step", "2Tolerance", "3Sizing",
+                     "4Quality views"):
             self.assertIn(f"{GROUP}/{name}", p)
         return before, after
 
