@@ -34,6 +34,9 @@ void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<in
 #pragma omp parallel for schedule(static, 512) if (sizing.thread_safe())
   for (int v = 0; v < nv; ++v) {
     double g[3];
+    // No hint yet (first call): start from where the previous vertex of this chunk was found —
+    // vertices are in space order, so the walk is short (same chunks for any thread count).
+    if (hints[v] < 0 && v % 512 != 0) hints[v] = hints[v - 1];
     H[v] = sizing.eval(m.point(v), g, &hints[v]);
     rho[v] = 1.0 / std::pow(H[v], 5);
   }
@@ -115,8 +118,8 @@ class Lloyd3Problem {
     const int nv = m_.nb_vertices();
     vertex_density(m_, *sizing_, hints_, H_, rho_);
     // Tets in space order: the per-tet and per-star passes below then hit the cache (flips
-    // scatter new tets over free slots; every few iterations is enough).
-    if (iteration_++ % 4 == 0) sort_tets_spatially(m_);
+    // scatter new tets over free slots; every few iterations is enough; sorted on entry).
+    if (++iteration_ % 4 == 0) sort_tets_spatially(m_);
     prepare_cell_mesh(m_, &rho_, delaunay_known_, cm_);
     const VertexStar& star = cm_.star;
     std::vector<CellIntegrals> cells(nv);
@@ -445,11 +448,21 @@ class Lloyd3Problem {
 
 LloydResult lloyd_optimize_3d(TetMesh& mesh, const Lloyd3Options& options,
                               const std::function<void(const LloydStep&)>& progress) {
+  // Free vertices in space order (fixed ones keep their ids) and the tets too: a tet's points, and
+  // neighbouring tets, are then close in memory. Both are permutations (the same mesh), done
+  // first so that the validity check below already runs on the ordered mesh; they only need the
+  // vertex ids in range.
+  const int nv = mesh.nb_vertices();
+  for (int v : mesh.tets)
+    if (v >= nv)
+      throw InvariantError("lloyd_optimize_3d: invalid input mesh: vertex id out of range");
+  for (int v : mesh.tris)
+    if (v < 0 || v >= nv)
+      throw InvariantError("lloyd_optimize_3d: invalid input mesh: vertex id out of range");
+  sort_free_vertices_spatially(mesh);
+  sort_tets_spatially(mesh);
   const MeshCheck c = check_mesh(mesh);
   if (!c.ok) throw InvariantError("lloyd_optimize_3d: invalid input mesh: " + c.problems.front());
-  // Free vertices in space order (fixed ones keep their ids): a tet's points are then close in
-  // memory too.
-  sort_free_vertices_spatially(mesh);
   Lloyd3Problem problem(mesh, options);
   LloydResult r = lloyd_iterate(problem, options.lloyd, progress);
   problem.finish();

@@ -98,18 +98,18 @@ class Background final : public SizingField3 {
       }
       for (int i = 0; i < nv; ++i) h_[i] = acc[i] / n[i];
     }
-    for (int t = 0; t < m.nb_tets(); ++t)
-      if (m.tets[4 * t] >= 0) {
-        first_tet_ = t;
-        break;
-      }
+    build_grid();
   }
 
   double eval(const double* x, double g[3], int* hint) const override {
-    int start = hint && *hint >= 0 && *hint < mesh_.nb_tets() && mesh_.tets[4 * *hint] >= 0
-                    ? *hint
-                    : first_tet_;
-    const LocateResult r = locate_point(mesh_, x, start, nullptr, 20000);
+    // From the hint (the last tet found for this vertex: a short walk), else from a tet at the
+    // background vertex nearest to x; a walk can leave a non-convex mesh through a hole (the
+    // ball of cube_sphere) before it reaches a far point, so a failed walk from the hint is
+    // retried from the nearest vertex.
+    const bool hinted = hint && *hint >= 0 && *hint < mesh_.nb_tets() && mesh_.tets[4 * *hint] >= 0;
+    LocateResult r = locate_point(mesh_, x, hinted ? *hint : near_tet(x), nullptr, 20000);
+    if (r.status != LocateStatus::kInside && hinted)
+      r = locate_point(mesh_, x, near_tet(x), nullptr, 20000);
     const int t = r.tet;
     if (hint) *hint = t;
     double w[4];
@@ -155,9 +155,85 @@ class Background final : public SizingField3 {
   }
 
  private:
+  // A uniform grid of the background vertices (about 4 per cell) and one tet at each vertex.
+  void build_grid() {
+    const int nv = mesh_.nb_vertices();
+    vertex_tet_.assign(nv, -1);
+    for (int t = 0; t < mesh_.nb_tets(); ++t)
+      if (mesh_.tets[4 * t] >= 0)
+        for (int k = 0; k < 4; ++k) vertex_tet_[mesh_.tets[4 * t + k]] = t;
+    double hi[3];
+    for (int d = 0; d < 3; ++d) lo_[d] = 1e300, hi[d] = -1e300;
+    int n = 0;
+    for (int v = 0; v < nv; ++v)
+      if (vertex_tet_[v] >= 0) {
+        ++n;
+        for (int d = 0; d < 3; ++d) {
+          lo_[d] = std::min(lo_[d], mesh_.point(v)[d]);
+          hi[d] = std::max(hi[d], mesh_.point(v)[d]);
+        }
+      }
+    if (n == 0) return;
+    double ext = 0;
+    for (int d = 0; d < 3; ++d) ext = std::max(ext, hi[d] - lo_[d]);
+    if (!(ext > 0)) ext = 1;
+    const double side = std::cbrt(4.0 * ext * ext * ext / n);  // ~ cube of 4 vertices' volume
+    for (int d = 0; d < 3; ++d) {
+      inv_cell_ = 1 / side;
+      dims_[d] = std::clamp(static_cast<int>((hi[d] - lo_[d]) * inv_cell_) + 1, 1, 1024);
+    }
+    cell_start_.assign(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2] + 1, 0);
+    for (int v = 0; v < nv; ++v)
+      if (vertex_tet_[v] >= 0) ++cell_start_[cell_of(mesh_.point(v)) + 1];
+    for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+    cell_vertices_.resize(cell_start_.back());
+    std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (int v = 0; v < nv; ++v)
+      if (vertex_tet_[v] >= 0) cell_vertices_[fill[cell_of(mesh_.point(v))]++] = v;
+  }
+
+  int coord(const double* x, int d) const {
+    return std::clamp(static_cast<int>(std::floor((x[d] - lo_[d]) * inv_cell_)), 0, dims_[d] - 1);
+  }
+  std::size_t cell_of(const double* x) const {
+    return (static_cast<std::size_t>(coord(x, 2)) * dims_[1] + coord(x, 1)) * dims_[0] +
+           coord(x, 0);
+  }
+
+  // A tet at the background vertex nearest to x among the grid cells of the first non-empty ring
+  // around x's cell and the next one (0 if the mesh has no tet).
+  int near_tet(const double* x) const {
+    if (cell_vertices_.empty()) return 0;
+    const int c[3] = {coord(x, 0), coord(x, 1), coord(x, 2)};
+    int best = -1, found_ring = -1;
+    double best_d = 1e300;
+    const int max_ring = std::max({dims_[0], dims_[1], dims_[2]});
+    for (int r = 0; r <= max_ring && (found_ring < 0 || r <= found_ring + 1); ++r) {
+      for (int k = c[2] - r; k <= c[2] + r; ++k)
+        for (int j = c[1] - r; j <= c[1] + r; ++j)
+          for (int i = c[0] - r; i <= c[0] + r; ++i) {
+            if (std::max({std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2])}) != r)
+              continue;  // the ring's shell only
+            if (i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] || k >= dims_[2])
+              continue;
+            const std::size_t cell = (static_cast<std::size_t>(k) * dims_[1] + j) * dims_[0] + i;
+            for (int q = cell_start_[cell]; q < cell_start_[cell + 1]; ++q) {
+              const int v = cell_vertices_[q];
+              const double d2 = dist2(x, mesh_.point(v));
+              if (d2 < best_d) best_d = d2, best = v;
+            }
+          }
+      if (best >= 0 && found_ring < 0) found_ring = r;
+    }
+    return best >= 0 ? vertex_tet_[best] : 0;
+  }
+
   TetMesh mesh_;
   std::vector<double> h_;
-  int first_tet_ = 0;
+  std::vector<int> vertex_tet_;
+  double lo_[3] = {0, 0, 0}, inv_cell_ = 1;
+  int dims_[3] = {1, 1, 1};
+  std::vector<int> cell_start_, cell_vertices_;
 };
 
 }  // namespace

@@ -25,7 +25,8 @@ void permute_vertices(TetMesh& m, const std::vector<int>& new_id) {
   for (int& v : m.tris) v = new_id[v];
   for (auto& b : m.model.extra)
     for (int& v : b.nodes) v = new_id[v];
-  build_adjacency(m);
+  // The adjacency (tet, local face) does not depend on the vertex ids: kept if it was built.
+  if (m.adj.size() != m.tets.size()) build_adjacency(m);
 }
 
 void renumber_vertices_like(TetMesh& mesh, const TetMesh& ref) {

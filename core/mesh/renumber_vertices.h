@@ -8,7 +8,8 @@
 namespace cvtmesh {
 
 // Applies the permutation new_id[old] to every array of the mesh (xyz, vclass, node_tags, tets,
-// tris, extra element blocks). new_id must be a permutation of 0..#V-1.
+// tris, extra element blocks). new_id must be a permutation of 0..#V-1. The tet adjacency is kept
+// (built if it was not).
 void permute_vertices(TetMesh& mesh, const std::vector<int>& new_id);
 
 // Renumbers `mesh` so that a vertex with the same node tag as vertex i of `ref` gets index i;
