@@ -30,19 +30,15 @@ double quality_of(const TetMesh& mesh, int t, Measure m) {
 }
 
 // The smooth functions of tet t (at the current coordinates): Q, then the dihedral angles in
-// degrees / angle_scale (+inf when angle_scale <= 0).
-std::array<double, kNbFn> tet_functions(const TetMesh& mesh, int t, double angle_scale) {
+// degrees / scale.
+std::array<double, kNbFn> tet_functions(const TetMesh& mesh, int t, double scale) {
   const int* v = tet_of(mesh, t);
   const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]),
                *d = mesh.point(v[3]);
   std::array<double, kNbFn> f;
   f[0] = tet_quality(a, b, c, d, Measure::kQ);
-  if (angle_scale > 0) {
-    const auto ang = tet_dihedral_angles(a, b, c, d);
-    for (int e = 0; e < 6; ++e) f[1 + e] = ang[e] * kDeg / angle_scale;
-  } else {
-    for (int e = 0; e < 6; ++e) f[1 + e] = kInf;
-  }
+  const auto ang = tet_dihedral_angles(a, b, c, d);
+  for (int e = 0; e < 6; ++e) f[1 + e] = ang[e] * kDeg / scale;
   return f;
 }
 
@@ -154,7 +150,9 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
   std::vector<char> done(static_cast<std::size_t>(mesh.nb_vertices()), 0);
   std::vector<std::array<double, kNbFn>> fv;
   std::vector<std::array<Vec3, kNbFn>> fg;
-  std::vector<std::pair<double, std::pair<int, int>>> order;
+  std::vector<std::pair<double, int>> order;
+  std::vector<std::pair<double, Vec3>> cand;
+  const double scale = o.angle_scale > 0 ? o.angle_scale : 60;  // of the angles' functions
   std::vector<Vec3> active;
   std::vector<double> sq, sa, lowest;
   for (int pass = 0; pass < o.passes; ++pass) {
@@ -190,56 +188,67 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
         StarValues cur = star_values(mesh, b, e, o.angle_scale, sq.data(), sa.data());
         if (!cur.valid) continue;  // cannot happen on a valid mesh; leave such a vertex alone
         const double start_objective = cur.objective;
-        // The guards: no tet of the star may fall below min(its value now, the floor).
+        // The guards: a tet at or above a floor stays there; one below it stays above the star's
+        // minimum now (in each measure).
+        const double star_q = *std::min_element(sq.begin(), sq.end());
+        const double star_a = *std::min_element(sa.begin(), sa.end());
         for (int i = 0; i < n; ++i) {
-          lowest[2 * i] = std::min(sq[i], q_floor);
-          lowest[2 * i + 1] = std::min(sa[i], angle_floor);
+          lowest[2 * i] = sq[i] >= q_floor ? q_floor : star_q;
+          lowest[2 * i + 1] = sa[i] >= angle_floor ? angle_floor : star_a;
         }
         bool moved = false;
         for (int step = 0; step < o.max_steps; ++step) {
           // Values and gradients of every function of the star.
           fv.resize(n);
           fg.resize(n);
-          double fmin = kInf;
-          for (int i = 0; i < n; ++i) {
-            fv[i] = tet_functions(mesh, b[i], o.angle_scale);
-            for (double x : fv[i]) fmin = std::min(fmin, x);
-          }
+          for (int i = 0; i < n; ++i) fv[i] = tet_functions(mesh, b[i], scale);
           for (int c = 0; c < 3; ++c) {
             const double x0 = P[c];
             for (int i = 0; i < n; ++i) {
               P[c] = x0 + h;
-              const auto fp = tet_functions(mesh, b[i], o.angle_scale);
+              const auto fp = tet_functions(mesh, b[i], scale);
               P[c] = x0 - h;
-              const auto fm = tet_functions(mesh, b[i], o.angle_scale);
-              for (int j = 0; j < kNbFn; ++j)
-                fg[i][j][c] = std::isfinite(fv[i][j]) ? (fp[j] - fm[j]) / (2 * h) : 0.0;
+              const auto fm = tet_functions(mesh, b[i], scale);
+              for (int j = 0; j < kNbFn; ++j) fg[i][j][c] = (fp[j] - fm[j]) / (2 * h);
             }
             P[c] = x0;
           }
-          // The active set: the functions within a small band of the minimum (at most 8).
-          order.clear();
-          const double band = 1e-3 + 1e-2 * std::fabs(fmin);
+          // The candidates: the objective's functions (Q, and the angles if angle_scale > 0),
+          // then the guards as functions: a value's margin above its lower bound, shifted by the
+          // objective, so that a guard at its bound is as active as the minimum (the ascent
+          // then slides along it instead of stopping).
+          cand.clear();
+          double fmin = kInf;
           for (int i = 0; i < n; ++i)
-            for (int j = 0; j < kNbFn; ++j)
-              if (fv[i][j] <= fmin + band) order.push_back({fv[i][j], {i, j}});
+            for (int j = 0; j < (o.angle_scale > 0 ? kNbFn : 1); ++j) {
+              cand.push_back({fv[i][j], fg[i][j]});
+              fmin = std::min(fmin, fv[i][j]);
+            }
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < kNbFn; ++j) {
+              const double low = j == 0 ? lowest[2 * i] : lowest[2 * i + 1] / scale;
+              cand.push_back({fv[i][j] - low + fmin, fg[i][j]});
+            }
+          // The active set: the candidates within a small band of the minimum (at most 8).
+          const double band = 1e-3 + 1e-2 * std::fabs(fmin);
+          order.clear();
+          for (int k = 0; k < static_cast<int>(cand.size()); ++k)
+            if (cand[k].first <= fmin + band) order.push_back({cand[k].first, k});
           std::sort(order.begin(), order.end());
           if (order.size() > 8) order.resize(8);
           active.clear();
-          for (const auto& a : order) active.push_back(fg[a.second.first][a.second.second]);
+          for (const auto& a : order) active.push_back(cand[a.second].second);
           const Vec3 d = min_norm_in_hull(active);
           const double slope = norm2(d);
           if (!(slope > 0)) break;
-          // Step length: where the linearised minimum meets another function's linearisation,
+          // Step length: where the linearised minimum meets another candidate's linearisation,
           // at most a fifth of the shortest edge.
           double alpha = 0.2 * lmin / std::sqrt(slope);
-          for (int i = 0; i < n; ++i)
-            for (int j = 0; j < kNbFn; ++j) {
-              if (!std::isfinite(fv[i][j])) continue;
-              const double sj = dot(fg[i][j], d);
-              if (sj < slope && fv[i][j] > fmin + band)
-                alpha = std::min(alpha, (fv[i][j] - fmin) / (slope - sj));
-            }
+          for (const auto& [value, grad] : cand) {
+            const double sj = dot(grad, d);
+            if (sj < slope && value > fmin + band)
+              alpha = std::min(alpha, (value - fmin) / (slope - sj));
+          }
           bool accepted = false;
           const Vec3 here = vec3(P);
           for (int halving = 0; halving <= o.max_halvings && !accepted; ++halving) {

@@ -6,9 +6,11 @@
 // active functions (all of them rise along it), with the step length predicted from where another
 // function would become the minimum, halved until the move is accepted. A move is accepted only
 // if every tet of the star stays positively oriented (exact orient3d), the objective strictly
-// rises, and no tet's Q or minimum dihedral angle falls below the lower of its value before and a
-// floor (see MaxMinOptions). Vertices with vclass.dim < 3 never move;
-// connectivity never changes. Serial and in a fixed order: the result depends on the input only.
+// rises, and the guards hold: a tet whose Q (minimum dihedral angle) is at or above a floor stays
+// there, one below it does not fall below the star's minimum Q (angle) before the move (see
+// MaxMinOptions). The guards are also functions of the ascent, which slides along them. Vertices
+// with vclass.dim < 3 never move; connectivity never changes. Serial and in a fixed order: the
+// result depends on the input only.
 #pragma once
 #include "core/mesh/tet_mesh.h"
 
@@ -21,9 +23,10 @@ struct MaxMinOptions {
   double angle_below = 30;
   // The dihedral angles enter the objective as angle (degrees) / angle_scale; <= 0: Q only.
   double angle_scale = 60;
-  // The guards: moving a vertex may lower the Q (minimum dihedral angle) of a tet of its star
-  // only down to min(the tet's value before, max(floor, the mesh's global minimum at the
-  // start)), so the global minima of both never decrease and good tets stay good.
+  // The guards, with floor_eff = max(floor, the mesh's global minimum at the start): moving a
+  // vertex never takes a tet of its star from at least floor_eff in Q (minimum dihedral angle)
+  // to below it, nor one below it to below the star's minimum before the move. So the global
+  // minima never decrease and good tets stay good.
   double q_floor = 0.5;
   double angle_floor = 30;
   // A vertex is moved only if its star's objective rises by at least this much (a small gain is
