@@ -28,6 +28,8 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
   c->add_option("--polish-flip-below", o.polish_flip_below,
                 "the polish flips only tets with a dihedral angle below this many degrees "
                 "(default 45; inf: all tets)");
+  c->add_flag("!--no-polish-maxmin", o.polish_maxmin,
+              "the polish without the max-min smoothing of the poor tets' vertices");
   c->add_option("--anderson", o.anderson_depth,
                 "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
       ->check(CLI::Range(0, 20));

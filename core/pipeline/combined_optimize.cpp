@@ -1,5 +1,7 @@
 #include "core/pipeline/combined_optimize.h"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "core/mesh/build_adjacency.h"
@@ -22,6 +24,13 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
   swap.compact = true;
   for (int it = 1; it <= options.max_iterations; ++it) {
     const SmoothStats ss = smooth_laplacian(mesh, smooth);
+    if (options.maxmin)
+      stats.nb_maxmin_moved += smooth_maxmin3(mesh, options.maxmin_options).nb_moved;
+    if (options.keep_min_q) {
+      double q_min = std::numeric_limits<double>::infinity();
+      for (double q : element_qualities(mesh, Measure::kQ)) q_min = std::min(q_min, q);
+      swap.guard_floor = std::max(options.swap.guard_floor, q_min);
+    }
     const SwapStats sw = swap_slivers(mesh, swap);
     stats.nb_moved += ss.nb_moved + ss.nb_half;
     stats.nb_flips += sw.nb_flip23 + sw.nb_flip32 + sw.nb_edge_removals;

@@ -1,13 +1,16 @@
 // The classical "Combined Optimization" (Du & Wang, Section 4, the CombOpt column of Tables 6
 // and 7): each iteration runs 3-5 guarded Laplacian smoothing passes over the interior vertices,
 // then edge/face flips that improve the minimal dihedral angles (swap_slivers with kMinAngle);
-// iterations stop when the quality stops improving or at max_iterations.
+// iterations stop when the quality stops improving or at max_iterations. Optionally (the
+// pipeline's polish) each iteration also runs the max-min smoothing of the poor tets
+// (smooth_maxmin3) between the Laplacian passes and the flips.
 #pragma once
 #include <functional>
 
 #include "core/mesh/tet_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "core/smoothing/smooth_laplacian.h"
+#include "core/smoothing/smooth_maxmin3.h"
 #include "core/swap/swap_slivers.h"
 
 namespace cvtmesh {
@@ -16,6 +19,13 @@ struct CombinedOptions {
   int max_iterations = 20;
   int smoothing_passes = 3;  // Laplacian passes per iteration (the paper: three to five)
   SmoothOptions smoothing;   // its `passes` is ignored (smoothing_passes is used)
+  // Max-min smoothing of the poor tets' vertices (smooth_maxmin3) after the Laplacian passes of
+  // each iteration (off in the classical CombOpt).
+  bool maxmin = false;
+  MaxMinOptions maxmin_options;
+  // Raise the flips' guard floor (swap.guard_floor, with swap.use_guard) to the mesh's current
+  // minimum Q before each iteration's flips, so that they never lower the global minimum Q.
+  bool keep_min_q = false;
   SwapOptions swap = [] {
     SwapOptions s;
     s.measure = Measure::kMinAngle;  // flips improving the minimal dihedral angles
@@ -31,8 +41,9 @@ struct CombinedStats {
   int iterations = 0;
   bool converged = false;
   QualityStats before, after;
-  long nb_moved = 0;  // accepted vertex moves (full or half steps), all iterations
-  long nb_flips = 0;  // committed flips and edge removals, all iterations
+  long nb_moved = 0;         // accepted vertex moves (full or half steps), all iterations
+  long nb_flips = 0;         // committed flips and edge removals, all iterations
+  long nb_maxmin_moved = 0;  // vertices moved by the max-min smoothing, all iterations
 };
 
 // Optimizes mesh in place (vertices with vclass.dim < 3 never move, constrained faces are kept,

@@ -97,9 +97,10 @@ void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   r.converged = st.converged;
 }
 
-// The polish: guarded Laplacian passes (never lower a star's minimum Q) and flips improving the
-// minimal dihedral angle that may not lower the minimum Q either, iterated (the CombOpt operators
-// with a Q guard on the flips).
+// The polish: guarded Laplacian passes (never lower a star's minimum Q), max-min smoothing of the
+// poor tets (smooth_maxmin3, unless !polish_maxmin) and flips improving the minimal dihedral
+// angle that may not lower the minimum Q either, iterated (the CombOpt operators with a Q guard
+// on the flips).
 void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   CombinedOptions co;
   co.max_iterations = o.max_iterations;
@@ -107,6 +108,11 @@ void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   co.swap.guard_measure = Measure::kQ;
   co.swap.guard_floor = o.polish_q_floor;
   co.swap.quality_threshold = o.polish_flip_below;
+  // Max-min smoothing of the poor tets' vertices between the Laplacian passes and the flips,
+  // and flips that never lower the global minimum Q (the smoothing raised it above the floor).
+  co.maxmin = o.polish_maxmin;
+  co.maxmin_options.passes = 1;
+  co.keep_min_q = o.polish_maxmin;
   const CombinedStats st = combined_optimize(
       mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
   r.iterations = st.iterations;

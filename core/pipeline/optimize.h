@@ -59,6 +59,9 @@ struct OptimizeOptions {
   // The polish's dihedral-angle flips try only tets whose minimal dihedral angle (degrees) is
   // below this (+inf: all; cube_sphere 25k: 2.2x slower, min dihedral 26.8 instead of 26.4).
   double polish_flip_below = 45;
+  // The polish also moves the vertices of its poor tets (Q < 0.5 or a dihedral angle < 30
+  // degrees) to maximise the minimum quality of their stars (core/smoothing/smooth_maxmin3.h).
+  bool polish_maxmin = true;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   std::function<void(const OptimizeProgress&)> progress;

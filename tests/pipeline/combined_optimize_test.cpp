@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "core/mesh/build_adjacency.h"
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
 #include "tests/swap/swap_test_util.h"
 
@@ -68,6 +70,56 @@ TEST(CombinedOptimize, ZeroIterationsLeavesTheMeshAloneAndBadOptionsThrow) {
   o.max_iterations = 1;
   o.swap.measure = Measure::kMaxAngle;
   EXPECT_THROW(combined_optimize(m, o), std::invalid_argument);
+}
+
+// The pipeline's polish configuration (run_polish3): Q-guarded dihedral flips, max-min smoothing,
+// flips that keep the global minimum Q.
+CombinedOptions polish_options() {
+  CombinedOptions o;
+  o.swap.use_guard = true;
+  o.swap.guard_measure = Measure::kQ;
+  o.swap.guard_floor = 0.4;
+  o.swap.quality_threshold = 45;
+  o.maxmin = true;
+  o.keep_min_q = true;
+  return o;
+}
+
+TEST(CombinedOptimize, MaxMinPolishNeverLowersTheMinimumQAndKeepsTheInvariants) {
+  // A CVDT+SWAP mesh of a small cube_sphere: what the polish gets in the pipeline.
+  MeshData d = testing::cube_sphere(0.14, 0.1);
+  OptimizeOptions oo;
+  oo.method = "cvdt+swap";
+  oo.max_iterations = 10;
+  optimize(d, oo);
+  TetMesh m = d.tet;
+  if (m.adj.size() != m.tets.size()) build_adjacency(m);
+  ASSERT_TRUE(check_mesh(m).ok);
+  const TetMesh start = m;
+  const double vol = total_volume(m);
+  const QualityStats init = quality_stats(start, "Init");
+  std::vector<double> q_min{init.q_min};
+  const CombinedStats s = combined_optimize(
+      m, polish_options(), [&](int, const QualityStats& q) { q_min.push_back(q.q_min); });
+  EXPECT_GT(s.nb_maxmin_moved, 0);
+  // Every operator of an iteration keeps the global minimum Q: it never decreases.
+  for (std::size_t i = 1; i < q_min.size(); ++i) EXPECT_GE(q_min[i], q_min[i - 1]) << i;
+  const QualityStats now = quality_stats(m, "Polish");
+  EXPECT_GE(now.q_min, init.q_min);
+  EXPECT_EQ(now.nb_inverted, 0);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems[0]);
+  EXPECT_EQ(constrained_triples(m), constrained_triples(start));
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    if (m.vclass[v].dim < 3)
+      for (int k = 0; k < 3; ++k) ASSERT_EQ(m.point(v)[k], start.point(v)[k]) << "vertex " << v;
+  EXPECT_NEAR(total_volume(m), vol, 1e-12 * vol);
+  EXPECT_NO_THROW(verify_optimized(start, m));
+  // Deterministic: the same input gives the same mesh.
+  TetMesh again = start;
+  combined_optimize(again, polish_options());
+  EXPECT_EQ(again.xyz, m.xyz);
+  EXPECT_EQ(again.tets, m.tets);
 }
 
 }  // namespace
