@@ -154,8 +154,8 @@ void register_bench(CLI::App& app) {
   c->add_flag("--femur", bo->femur, "also the femur (geo/femur.geo)");
   c->add_option("--methods", bo->methods, "our methods to run");
   c->add_flag("--plain-lloyd", bo->plain,
-              "also plain Lloyd (the paper's step), and how many accelerated iterations reach its "
-              "final energy");
+              "also plain Lloyd (the paper's step), and how many iterations of L-BFGS (the "
+              "default) and of Anderson-accelerated Lloyd reach its final energy");
   c->add_option("--max-iterations", opt->max_iterations, "maximum Lloyd / outer iterations");
   c->add_option("--tolerance", opt->tolerance, "Lloyd tolerance");
   commands().push_back(
@@ -240,14 +240,16 @@ void register_bench(CLI::App& app) {
            };
            for (const auto& m : bo->methods) run_method(m + " on Init", m, -1, -1);
            if (bo->plain) {
-             // Plain Lloyd to convergence, then the accelerated one for as many iterations
-             // without a stop (its D criterion differs), to see when it reaches that energy.
-             run_method("cvdt, plain Lloyd (omega 1, no Anderson)", "cvdt", 1.0, 0);
+             // Plain Lloyd to convergence, then the accelerated ones (L-BFGS, the 3D default, and
+             // over-relaxed Lloyd + Anderson) for as many iterations without a stop (their D
+             // criterion differs), to see when they reach that energy.
+             run_method("cvdt, plain Lloyd (omega 1, no Anderson)", "cvdt", 1.0, 0, -1, -1, 0);
              const int plain_its = rows.back().ok ? static_cast<int>(rows.back().energy.size()) : 0;
              if (plain_its > 0) {
-               run_method("cvdt, accelerated, as many iterations", "cvdt", -1, -1, plain_its, 0.0);
-               run_method("cvdt, L-BFGS (memory 5), as many iterations", "cvdt", -1, -1, plain_its,
-                          0.0, 5);
+               run_method("cvdt, L-BFGS (default), as many iterations", "cvdt", -1, -1, plain_its,
+                          0.0);
+               run_method("cvdt, Anderson (omega 1.5, depth 5), as many iterations", "cvdt", -1, -1,
+                          plain_its, 0.0, 0);
              }
            }
            std::cerr << "cvtmesh: bench " << in.name << " done\n";

@@ -34,8 +34,9 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
                 "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
       ->check(CLI::Range(0, 20));
   c->add_option("--lbfgs", o.lbfgs_memory,
-                "CVT (2D and 3D): minimise the CVT energy by L-BFGS with this memory (e.g. 5) "
-                "instead of Lloyd's step (0 = Lloyd); reaches a given energy in fewer iterations")
+                "CVT: minimise the CVT energy by L-BFGS with this memory instead of Lloyd's step; "
+                "0 = Lloyd's step (with --relaxation/--anderson); default: 5 in 3D, 0 in 2D. "
+                "The paper's plain Lloyd: --lbfgs 0 --anderson 0 --relaxation 1")
       ->check(CLI::Range(0, 50));
   c->add_option("--hops", o.hops,
                 "2D CVT: basin-hopping trials after Lloyd converges (0 = off): kick every free "

@@ -14,9 +14,9 @@ const std::string kMethod = kGroup + "/0Method";
 const std::string kIterations = kGroup + "/1Max iterations";
 const std::string kTolerance = kGroup + "/2Tolerance";
 const std::string kStep = kGroup + "/2Lloyd step";  // sorts before Tolerance
-// The Lloyd step: accelerated (relaxation + Anderson, the default), L-BFGS on the CVT energy, or
-// the paper's plain step.
-const std::vector<std::string> kSteps = {"accelerated", "L-BFGS", "plain (paper)"};
+// The Lloyd step: the dimension's default (L-BFGS in 3D, Anderson in 2D), L-BFGS on the CVT
+// energy, over-relaxed Lloyd with Anderson mixing, or the paper's plain step.
+const std::vector<std::string> kSteps = {"default", "L-BFGS", "Anderson", "plain (paper)"};
 const std::string kSizing = kGroup + "/3Sizing";
 const std::string kViews = kGroup + "/4Quality views";
 const std::string kDim = kGroup + "/dim";
@@ -100,9 +100,9 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   tree.set(tol);
 
   OnelabParam step = input(kStep, 0,
-                           "CVT (Lloyd) step: accelerated = over-relaxed Lloyd with Anderson "
-                           "mixing; L-BFGS = quasi-Newton on the CVT energy (fewest iterations); "
-                           "plain = the paper's Lloyd step");
+                           "CVT (Lloyd) step: default = L-BFGS in 3D, Anderson in 2D; L-BFGS = "
+                           "quasi-Newton on the CVT energy (fewest iterations); Anderson = "
+                           "over-relaxed Lloyd with Anderson mixing; plain = the paper's step");
   for (std::size_t i = 0; i < kSteps.size(); ++i) {
     step.choices.push_back(static_cast<double>(i));
     step.labels.push_back(kSteps[i]);
@@ -182,6 +182,10 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
       o.optimize.lbfgs_memory = 5;
       break;
     case 2:
+      o.optimize.lbfgs_memory = 0;
+      break;
+    case 3:
+      o.optimize.lbfgs_memory = 0;
       o.optimize.anderson_depth = 0;
       o.optimize.relaxation = 1.0;
       break;

@@ -43,8 +43,9 @@ GmshOptimizeOptions options_from(const std::string& method, int max_iterations, 
   o.optimize.max_iterations = max_iterations;
   o.optimize.tolerance = tolerance;
   o.optimize.relaxation = relaxation;
-  if (acc.anderson < 0 || acc.lbfgs < 0 || acc.hops < 0 || !(acc.hop_amount > 0))
-    throw py::value_error("anderson, lbfgs and hops must be >= 0, hop_amount > 0");
+  if (acc.anderson < 0 || acc.lbfgs < -1 || acc.hops < 0 || !(acc.hop_amount > 0))
+    throw py::value_error(
+        "anderson and hops must be >= 0, lbfgs >= 0 (or -1: the default), hop_amount > 0");
   o.optimize.anderson_depth = acc.anderson;
   o.optimize.lbfgs_memory = acc.lbfgs;
   o.optimize.hops = acc.hops;
@@ -126,8 +127,9 @@ PYBIND11_MODULE(cvtmesh, m) {
       "surface (2D) with method (one of methods(dim); '' = the first, the paper's best) —\n"
       "dim=-1 picks the highest meshed dimension. Entities, physical groups and\n"
       "lower-dimensional elements stay. relaxation: Lloyd over-relaxation in (0, 2); anderson:\n"
-      "Anderson depth (0 = plain Lloyd); lbfgs: L-BFGS memory (minimise the CVT energy by\n"
-      "L-BFGS instead of Lloyd's step; 0 = off); hops, hop_amount: 2D basin hopping. generate=True "
+      "Anderson depth; lbfgs: L-BFGS memory (minimise the CVT energy by L-BFGS instead of\n"
+      "Lloyd's step; 0 = Lloyd's step, -1 = default: 5 in 3D, 0 in 2D; the paper's plain Lloyd\n"
+      "is lbfgs=0, anderson=0, relaxation=1); hops, hop_amount: 2D basin hopping. generate=True "
       "meshes the model first if it has no mesh;\n"
       "quality_views=True adds per-element views (Q, radius ratio, min angle). progress, if\n"
       "given, is called with a dict (phase, iteration, D, energy, q_min, q_avg).\n"

@@ -268,7 +268,7 @@ class Lloyd3Problem {
     lb_.z = e_.z;
     lb_.c = e_.c;
     lb_.g = g;
-    // Two-loop recursion: dir = -H g, H0 = diag(1 / (2 m_i)) (the Lloyd step).
+    // Two-loop recursion: dir = -H g, H0 = diag(relaxation / (2 m_i)) (the relaxed Lloyd step).
     std::vector<double> q = g;
     const int m = static_cast<int>(lb_.s.size());
     std::vector<double> alpha(m);
@@ -283,7 +283,7 @@ class Lloyd3Problem {
     }
     for (std::size_t k = 0; k < n; ++k) {
       const double mass = e_.mass[k / 3];
-      q[k] = mass > 0 ? q[k] / (2 * mass) : 0;
+      q[k] = mass > 0 ? o_.relaxation * q[k] / (2 * mass) : 0;
     }
     for (int i = 0; i < m; ++i) {
       const double beta = lb_.rho[i] * dot(lb_.y[i], q);

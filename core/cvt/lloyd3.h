@@ -33,9 +33,10 @@ struct Lloyd3Options {
   // L-BFGS on the CVT energy instead of Lloyd's step (Liu et al. 2009, "On centroidal Voronoi
   // tessellation - energy smoothness and fast computation"), with this memory (0 = off; then
   // relaxation/anderson_depth apply). Gradient dF/dz_i = 2 m_i (z_i - c_i), initial inverse
-  // Hessian diag(1 / (2 m_i)) (the first direction is Lloyd's step), backtracking line search
-  // (Armijo on the actual, safeguarded moves; at most 3 trials, then the plain Lloyd step). Every
-  // trial is one iteration (one evaluation of the cells); a rejected one reports `restarted`.
+  // Hessian diag(relaxation / (2 m_i)) (the first direction is the relaxed Lloyd step: the CVT
+  // Hessian is 2 m_i (I - dc_i/dz_i), so 1 / (2 m_i) underestimates the step), backtracking line
+  // search (Armijo on the actual, safeguarded moves; at most 3 trials, then the plain Lloyd step).
+  // Every trial is one iteration (one evaluation of the cells); a rejected one reports `restarted`.
   int lbfgs_memory = 0;
   // Re-insertion: restore the constrained Delaunay property by exact Lawson flips on the current
   // mesh after the move (restore_delaunay3.h); rebuild with the backend only when a moved vertex

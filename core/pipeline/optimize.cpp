@@ -53,7 +53,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.lloyd.tolerance = o.tolerance;
   lo.relaxation = o.relaxation;
   lo.anderson_depth = o.anderson_depth;
-  lo.lbfgs_memory = o.lbfgs_memory;
+  lo.lbfgs_memory = o.lbfgs_memory < 0 ? 5 : o.lbfgs_memory;
   lo.sizing = sizing3(mesh, o);
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {

@@ -43,8 +43,9 @@ struct OptimizeOptions {
   double hop_amount = 0.3;
   // CVT (2D and 3D): minimise the CVT energy by L-BFGS with this memory instead of Lloyd's step
   // (Lloyd2dOptions / Lloyd3Options::lbfgs_memory; 0 = Lloyd, then relaxation/anderson_depth
-  // apply).
-  int lbfgs_memory = 0;
+  // apply; relaxation also scales L-BFGS's initial inverse Hessian). -1 = the dimension's
+  // default: L-BFGS(5) in 3D (fewest iterations, best quality measured), Lloyd in 2D.
+  int lbfgs_memory = -1;
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
   // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
   std::string sizing = "mesh";

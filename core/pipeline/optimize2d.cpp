@@ -1,5 +1,6 @@
 #include "core/pipeline/optimize2d.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -48,7 +49,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
     lo.sizing = sizing;
     lo.relaxation = options.relaxation;
     lo.anderson_depth = options.anderson_depth;
-    lo.lbfgs_memory = options.lbfgs_memory;
+    lo.lbfgs_memory = std::max(0, options.lbfgs_memory);
     lo.hops = options.hops;
     lo.hop_amount = options.hop_amount;
     lo.hop_seed = options.seed;

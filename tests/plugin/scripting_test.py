@@ -131,9 +131,11 @@ class InProcessScripting(unittest.TestCase):
         self.assertAlmostEqual(q["average_quality"], table["after"]["average_quality"], places=12)
 
     def test_lbfgs_and_plain_lloyd_are_reachable(self):
-        # L-BFGS (lbfgs=5) and the paper's plain Lloyd (anderson=0, relaxation=1) both run on the
-        # current model and improve it; basin hopping is 2D only and refused on this 3D mesh.
-        for kwargs in ({"lbfgs": 5}, {"anderson": 0, "relaxation": 1.0}):
+        # L-BFGS (lbfgs=5, the 3D default), Anderson and the paper's plain Lloyd (lbfgs=0,
+        # anderson=0, relaxation=1) all run on the current model and improve it; basin hopping is
+        # 2D only and refused on this 3D mesh.
+        for kwargs in ({"lbfgs": 5}, {"lbfgs": 0},
+                       {"lbfgs": 0, "anderson": 0, "relaxation": 1.0}):
             gmsh.model.mesh.clear()
             gmsh.model.mesh.generate(3)
             table = cvtmesh.optimize(method="cvdt", max_iterations=8, tolerance=0, **kwargs)
@@ -144,7 +146,7 @@ class InProcessScripting(unittest.TestCase):
         with self.assertRaises(ValueError):
             cvtmesh.optimize(method="cvdt", hops=2)
         with self.assertRaises(ValueError):
-            cvtmesh.optimize(method="cvdt", lbfgs=-1)
+            cvtmesh.optimize(method="cvdt", lbfgs=-2)
         self.assertEqual(nodes(2), boundary)
 
     def test_errors_are_exceptions_and_leave_the_model_alone(self):
