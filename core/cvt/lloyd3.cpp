@@ -9,6 +9,7 @@
 #include "core/cvt/cell_mesh.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/delaunay/delaunay3.h"
+#include "core/geometry/predicates.h"
 #include "core/delaunay/relocate_vertices3.h"
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/locate_point.h"
@@ -103,10 +104,13 @@ class Lloyd3Problem {
   // The last iteration may have left a few faces non-Delaunay or vertices short of their targets
   // (see Lloyd3Options::max_flip_leftover): rebuild the constrained Delaunay mesh of the points.
   void finish() {
-    if (mesh_is_cdt_) return;
+    if (mesh_is_cdt_) {
+      if (!last_check_full_) verify_after_step(true);
+      return;
+    }
     const Delaunay3Stats ds = delaunay_->retetrahedralize(m_);
     nb_steiner_ += ds.nb_steiner;
-    verify_after_step();
+    verify_after_step(true);
     mesh_is_cdt_ = true;
   }
 
@@ -358,7 +362,9 @@ class Lloyd3Problem {
     }
     s.seconds_delaunay = seconds_since(t1);
     const auto t2 = Clock::now();
-    verify_after_step();
+    // The whole structure (check_mesh) every 4th iteration, after a rebuild and at the end; the
+    // orientation of every tet after every move (see verify_after_step).
+    verify_after_step(s.rebuilt || iteration_ % 4 == 0);
     s.seconds_check = seconds_since(t2);
   }
 
@@ -382,11 +388,31 @@ class Lloyd3Problem {
     return false;
   }
 
-  void verify_after_step() {
-    const MeshCheck c = check_mesh(m_);
-    if (!c.ok)
-      throw InvariantError("Lloyd iteration produced an invalid mesh: " +
-                           (c.problems.empty() ? std::string("?") : c.problems.front()));
+  // full: check_mesh (orientation, adjacency, closed boundary, constrained triangles present,
+  // interfaces). Otherwise every live tet's orientation (exact orient3d, in parallel): the moves
+  // and flips change connectivity only through apply_swap, whose structure the full check
+  // verifies every few iterations and at the end.
+  void verify_after_step(bool full) {
+    last_check_full_ = full;
+    if (full) {
+      const MeshCheck c = check_mesh(m_);
+      if (!c.ok)
+        throw InvariantError("Lloyd iteration produced an invalid mesh: " +
+                             (c.problems.empty() ? std::string("?") : c.problems.front()));
+    } else {
+      const int nt = m_.nb_tets();
+      int bad = -1;
+#pragma omp parallel for schedule(static, 1024) reduction(max : bad)
+      for (int t = 0; t < nt; ++t) {
+        const int* tv = &m_.tets[4 * t];
+        if (tv[0] >= 0 &&
+            orient3d(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), m_.point(tv[3])) <= 0)
+          bad = std::max(bad, t);
+      }
+      if (bad >= 0)
+        throw InvariantError("Lloyd iteration produced an invalid mesh: tet " +
+                             std::to_string(bad) + " is inverted or flat");
+    }
     // Every vertex that had tets must still have some (no point lost in a hole).
     std::vector<char> used(m_.nb_vertices(), 0);
     for (int t = 0; t < m_.nb_tets(); ++t)
@@ -429,6 +455,7 @@ class Lloyd3Problem {
   bool delaunay_known_ = false;       // every unconstrained face is locally Delaunay
   bool mesh_is_cdt_ = true;           // the mesh is the constrained Delaunay one of its points
   int iteration_ = 0;
+  bool last_check_full_ = true;
   std::shared_ptr<const SizingField3> sizing_;
   std::vector<int> hints_;
   std::vector<double> H_, rho_;
