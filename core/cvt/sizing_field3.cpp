@@ -6,6 +6,7 @@
 #include "core/geometry/vec3.h"
 #include "core/mesh/face_key.h"
 #include "core/mesh/locate_point.h"
+#include "core/mesh/sort_tets.h"
 
 namespace cvtmesh {
 
@@ -56,7 +57,12 @@ class Function final : public SizingField3 {
 
 class Background final : public SizingField3 {
  public:
-  explicit Background(const TetMesh& m) : mesh_(m) {
+  explicit Background(const TetMesh& input) : mesh_(input) {
+    // The walks of eval() then step through memory in space order too (the input may be in any
+    // order; the background's vertex and tet ids are its own).
+    sort_all_vertices_spatially(mesh_);
+    sort_tets_spatially(mesh_);
+    const TetMesh& m = mesh_;
     const int nv = m.nb_vertices();
     std::vector<double> sum(nv, 0);
     std::vector<int> cnt(nv, 0);

@@ -46,6 +46,18 @@ void bounding_box(const TetMesh& m, double* lo, double* scale) {
 
 }  // namespace
 
+void sort_all_vertices_spatially(TetMesh& m) {
+  const int nv = m.nb_vertices();
+  double lo[3], scale[3];
+  bounding_box(m, lo, scale);
+  std::vector<std::pair<std::uint64_t, int>> key(nv);
+  for (int v = 0; v < nv; ++v) key[v] = {morton(m.point(v), lo, scale), v};
+  std::sort(key.begin(), key.end());
+  std::vector<int> new_id(nv);
+  for (int i = 0; i < nv; ++i) new_id[key[i].second] = i;
+  permute_vertices(m, new_id);
+}
+
 void sort_free_vertices_spatially(TetMesh& m) {
   const int nv = m.nb_vertices();
   double lo[3], scale[3];

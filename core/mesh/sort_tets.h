@@ -16,4 +16,8 @@ void sort_tets_spatially(TetMesh& mesh);
 // tag, so writing back to Gmsh is unchanged.
 void sort_free_vertices_spatially(TetMesh& mesh);
 
+// Renumbers every vertex along the curve (for a mesh whose vertex ids mean nothing outside, e.g. a
+// frozen background mesh).
+void sort_all_vertices_spatially(TetMesh& mesh);
+
 }  // namespace cvtmesh
