@@ -82,7 +82,7 @@ void flip_until_delaunay(TetMesh& m, const ConstrainedFaces& cf,
   for (const auto& [t, f] : stuck)
     if (m.tets[4 * t] >= 0 && non_delaunay(m, cf, t, f)) ++st.nb_stuck;
   if (!stack.empty()) ++st.nb_stuck;
-  if (!free_slots.empty()) compact_tets(m);
+  if (!free_slots.empty()) compact_tets_fill(m);  // tet order is restored by the Lloyd loop
   st.ok = st.nb_stuck == 0;
 }
 

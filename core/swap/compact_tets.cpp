@@ -43,4 +43,38 @@ int compact_tets(TetMesh& mesh) {
   return nt - live;
 }
 
+int compact_tets_fill(TetMesh& mesh) {
+  if (mesh.adj.size() != mesh.tets.size()) return compact_tets(mesh);
+  const bool has_tags = mesh.tet_tags.size() == mesh.tet_region.size();
+  int end = mesh.nb_tets();
+  const int before = end;
+  auto dead = [&](int t) { return mesh.tets[4 * static_cast<std::size_t>(t)] < 0; };
+  for (int hole = 0; hole < end; ++hole) {
+    if (!dead(hole)) continue;
+    while (end > hole + 1 && dead(end - 1)) --end;
+    if (end == hole + 1) {  // nothing live after the hole
+      end = hole;
+      break;
+    }
+    const int from = --end;  // live: move it into the hole
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t i = 4 * static_cast<std::size_t>(hole) + k,
+                        j = 4 * static_cast<std::size_t>(from) + k;
+      mesh.tets[i] = mesh.tets[j];
+      const int o = mesh.adj[j];
+      mesh.adj[i] = o;
+      if (o >= 0) mesh.adj[o] = 4 * hole + k;
+      mesh.tets[j] = -1;
+    }
+    mesh.tet_region[hole] = mesh.tet_region[from];
+    if (has_tags) mesh.tet_tags[hole] = mesh.tet_tags[from];
+  }
+  while (end > 0 && dead(end - 1)) --end;
+  mesh.tets.resize(4 * static_cast<std::size_t>(end));
+  mesh.adj.resize(4 * static_cast<std::size_t>(end));
+  mesh.tet_region.resize(end);
+  if (has_tags) mesh.tet_tags.resize(end);
+  return before - end;
+}
+
 }  // namespace cvtmesh

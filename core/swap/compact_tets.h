@@ -9,4 +9,9 @@ namespace cvtmesh {
 // If mesh.adj is not 4*#T (not built), it is built from scratch (build_adjacency).
 int compact_tets(TetMesh& mesh);
 
+// The same without keeping the order: each dead slot below the new end takes a live tet from the
+// end (its neighbours' links follow). O(#dead slots + the tail) instead of O(#T): for a large mesh
+// with a few holes (adjacency must be built). Returns the number of slots removed.
+int compact_tets_fill(TetMesh& mesh);
+
 }  // namespace cvtmesh

@@ -100,3 +100,36 @@ TEST(SortFreeVertices, RenumbersOnlyFreeVerticesAndKeepsTagsWithPoints) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+#include "core/swap/compact_tets.h"
+#include "core/swap/flip32.h"
+
+namespace cvtmesh {
+namespace {
+
+// compact_tets_fill: 3-2 flips leave dead slots in the middle of the array; filling them from the
+// end keeps the same tets (with regions), a valid adjacency, and no dead slot.
+TEST(CompactTetsFill, FillsHolesFromTheEndAndKeepsTheMeshValid) {
+  MeshData d = testing::cube_sphere(0.1, 0.08, /*gmsh_optimize=*/false, {{"two_regions", 1}});
+  TetMesh m = d.tet;
+  int flips = 0;
+  for (int t = 0; t < m.nb_tets() && flips < 25; ++t)
+    for (int e = 0; e < 6 && m.tets[4 * t] >= 0; ++e)
+      if (flip32(m, t, e).status == SwapStatus::kOk) ++flips;
+  ASSERT_GT(flips, 3);
+  const int slots = m.nb_tets();
+  int dead = 0;
+  for (int t = 0; t < slots; ++t) dead += m.tets[4 * t] < 0;
+  ASSERT_EQ(dead, flips);
+  const auto before = tet_set(m);
+  EXPECT_EQ(compact_tets_fill(m), dead);
+  EXPECT_EQ(m.nb_tets(), slots - dead);
+  for (int t = 0; t < m.nb_tets(); ++t) EXPECT_GE(m.tets[4 * t], 0);
+  const MeshCheck c = check_mesh(m);
+  ASSERT_TRUE(c.ok) << c.problems.front();
+  EXPECT_EQ(tet_set(m), before);
+  EXPECT_EQ(compact_tets_fill(m), 0);
+}
+
+}  // namespace
+}  // namespace cvtmesh
