@@ -30,6 +30,9 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
                 "(default 45; inf: all tets)");
   c->add_flag("!--no-polish-maxmin", o.polish_maxmin,
               "the polish without the max-min smoothing of the poor tets' vertices");
+  c->add_flag("!--no-polish-repair", o.polish_repair,
+              "the polish without the final repair of its slivers (vertex insertion, flips "
+              "with local smoothing)");
   c->add_option("--anderson", o.anderson_depth,
                 "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
       ->check(CLI::Range(0, 20));

@@ -9,6 +9,7 @@
 #include "core/cvt/sizing_field3.h"
 #include "core/pipeline/combined_optimize.h"
 #include "core/pipeline/optimize2d.h"
+#include "core/pipeline/repair_slivers.h"
 #include "core/swap/swap_slivers.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
@@ -100,7 +101,7 @@ void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
 // The polish: guarded Laplacian passes (never lower a star's minimum Q), max-min smoothing of the
 // poor tets (smooth_maxmin3, unless !polish_maxmin) and flips improving the minimal dihedral
 // angle that may not lower the minimum Q either, iterated (the CombOpt operators with a Q guard
-// on the flips).
+// on the flips); then the repair of the slivers left (repair_slivers, unless !polish_repair).
 void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   CombinedOptions co;
   co.max_iterations = o.max_iterations;
@@ -117,6 +118,10 @@ void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
       mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
   r.iterations = st.iterations;
   r.converged = st.converged;
+  if (o.polish_repair) {
+    repair_slivers(mesh, RepairOptions{});
+    if (o.progress) report(o, "repair", 1, 0, 0, quality_stats(mesh, ""));
+  }
 }
 
 // CVDT + SWAP, then the polish (removes near-boundary slivers that flips alone cannot).

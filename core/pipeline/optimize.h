@@ -63,6 +63,11 @@ struct OptimizeOptions {
   // The polish also moves the vertices of its poor tets (Q < 0.5 or a dihedral angle < 30
   // degrees) to maximise the minimum quality of their stars (core/smoothing/smooth_maxmin3.h).
   bool polish_maxmin = true;
+  // The polish ends with the repair of the slivers it left (Q < 0.2 or a dihedral angle < 15
+  // degrees, most often locked by the boundary): a new interior vertex or a flip, each followed
+  // by local max-min smoothing and flips, kept only where the local minimum rises
+  // (core/pipeline/repair_slivers.h). May add interior vertices.
+  bool polish_repair = true;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   std::function<void(const OptimizeProgress&)> progress;

@@ -152,6 +152,41 @@ void check_group_boundaries(const std::vector<PhysicalGroup>& groups, int dim,
                            (K == 4 ? "triangles" : "edges"));
 }
 
+// Vertices added by the optimizer (ids from before's count on: the sliver repair's insertions,
+// TetGen's Steiner points in a Lloyd rebuild) are interior vertices strictly inside one region:
+// class dim 3 and, when in a tet, every tet around them of one region, their class's entity.
+// They are on no constrained triangle: the triangles are compared by vertex ids, and check_mesh
+// makes every boundary face of the tets a constrained triangle, so such a vertex is surrounded by
+// its tets. A new vertex in no tet is tolerated (TetGen may leave a Steiner point in a hole of
+// the domain, whose tets are dropped); it is in no element.
+void check_new_vertices(const TetMesh& before, const TetMesh& after) {
+  const int n0 = before.nb_vertices(), n1 = after.nb_vertices();
+  if (n1 == n0) return;
+  if (after.vclass.size() != static_cast<std::size_t>(n1))
+    throw InvariantError("the vertex classification does not cover the new vertices");
+  std::vector<int> region(static_cast<std::size_t>(n1 - n0), 0);
+  std::vector<char> used(region.size(), 0);
+  for (int t = 0; t < after.nb_tets(); ++t) {
+    const int* v = &after.tets[4 * static_cast<std::size_t>(t)];
+    if (v[0] < 0) continue;
+    for (int k = 0; k < 4; ++k) {
+      if (v[k] < n0) continue;
+      const std::size_t i = static_cast<std::size_t>(v[k] - n0);
+      if (used[i] && region[i] != after.tet_region[t])
+        throw InvariantError("new vertex " + std::to_string(v[k]) +
+                             " is on the interface of two regions");
+      used[i] = 1;
+      region[i] = after.tet_region[t];
+    }
+  }
+  for (int v = n0; v < n1; ++v) {
+    const std::size_t i = static_cast<std::size_t>(v - n0);
+    if (after.vclass[v].dim != 3 || (used[i] && after.vclass[v].entity != region[i]))
+      throw InvariantError("new vertex " + std::to_string(v) +
+                           " is not classified as interior to its region");
+  }
+}
+
 }  // namespace
 
 std::vector<std::pair<int, double>> region_volumes(const TetMesh& m) {
@@ -191,6 +226,7 @@ void verify_optimized(const TetMesh& before, const TetMesh& after) {
   };
   if (tri_set(before) != tri_set(after))
     throw InvariantError("boundary or interface triangles changed");
+  check_new_vertices(before, after);
   // Region volumes conserved.
   const auto vb = region_volumes(before), va = region_volumes(after);
   if (vb.size() != va.size()) throw InvariantError("a region disappeared or appeared");

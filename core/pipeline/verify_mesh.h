@@ -11,10 +11,11 @@ namespace cvtmesh {
 
 // After vs before: valid mesh (check_mesh: adjacency, no inverted/flat tet, boundary closed),
 // the same constrained triangles (same vertex triples with the same coordinates and surface tags),
-// fixed vertices unmoved, every region present with its volume (area in 2D) conserved to 1e-12
-// relative (compensated sums), every physical group present with the same name and entities and,
-// for groups of the mesh's dimension, bounded by the same triangles (edges), the model's entities
-// with the same boundaries, the point and line elements unchanged.
+// fixed vertices unmoved, new vertices (if any) interior (class dim 3, every tet around them in
+// the region of their class's entity), every region present with its volume (area in 2D) conserved
+// to 1e-12 relative (compensated sums), every physical group present with the same name and
+// entities and, for groups of the mesh's dimension, bounded by the same triangles (edges), the
+// model's entities with the same boundaries, the point and line elements unchanged.
 void verify_optimized(const TetMesh& before, const TetMesh& after);
 void verify_optimized(const TriMesh2& before, const TriMesh2& after);
 

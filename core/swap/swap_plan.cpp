@@ -18,6 +18,8 @@ const char* swap_status_name(SwapStatus s) {
       return "a new tet would be inverted or flat";
     case SwapStatus::kRingSize:
       return "unsupported number of tets around the edge";
+    case SwapStatus::kInteriorVertex:
+      return "a vertex lies inside the cavity";
   }
   return "?";
 }

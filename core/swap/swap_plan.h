@@ -1,7 +1,8 @@
 // SwapPlan: a local retriangulation proposed by a topological operation (2-3 flip, 3-2 flip,
 // edge removal), before anything is changed. Planning checks validity only (exact orientation,
 // constrained faces, regions); whether to commit is decided separately (accept_swap.h) and
-// committing is apply_swap.h. Operations never move a vertex.
+// committing is apply_swap.h. Operations never move a vertex; only a vertex insertion
+// (insert_vertex.h) adds one.
 #pragma once
 #include <array>
 #include <vector>
@@ -18,6 +19,7 @@ enum class SwapStatus {
   kMixedRegions,     // the tets involved belong to different regions
   kNotConvex,        // a new tet would be inverted or flat (exact orient3d)
   kRingSize,         // the number of tets around the edge is not what the operation handles
+  kInteriorVertex,   // a vertex insertion's cavity has a vertex inside (it would be lost)
 };
 
 const char* swap_status_name(SwapStatus s);

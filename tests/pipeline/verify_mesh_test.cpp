@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/mesh/check_mesh.h"
+#include "core/swap/insert_vertex.h"
 #include "core/util/error.h"
 #include "tests/support/test_meshes.h"
 
@@ -70,6 +72,34 @@ TEST(VerifyOptimized, TheTwoCubesAreValidAndPass) {
   EXPECT_NEAR(v[0].second, 1.0, 1e-15);
   EXPECT_EQ(v[1].second, v[0].second);  // the same shape translated: the same rounding
   EXPECT_EQ(violation(m, m), "");
+}
+
+TEST(VerifyOptimized, AcceptsANewVertexInsideARegionOnlyIfClassifiedSo) {
+  const TetMesh m = two_cubes();
+  // The centre of the left cube joined to its 12 boundary triangles (insert_vertex).
+  TetMesh after = m;
+  std::vector<int> left = {0, 1, 2, 3, 4, 5};
+  const double centre[3] = {0.5, 0.5, 0.5};
+  SwapPlan plan = plan_insert_vertex(after, left, centre);
+  ASSERT_EQ(plan.status, SwapStatus::kOk);
+  const int v = insert_vertex(after, plan, centre);
+  EXPECT_EQ(violation(m, after), "");
+  TetMesh wrong = after;
+  wrong.vclass[v].dim = 2;  // a new vertex on a surface: not allowed
+  EXPECT_NE(violation(m, wrong).find("new vertex"), std::string::npos) << violation(m, wrong);
+  wrong = after;
+  wrong.vclass[v].entity = 2;  // classified in the other region
+  EXPECT_NE(violation(m, wrong).find("new vertex"), std::string::npos) << violation(m, wrong);
+  wrong = after;
+  for (int t = 0; t < wrong.nb_tets(); ++t)  // one of its tets moved to region 2
+    if (std::count(&wrong.tets[4 * t], &wrong.tets[4 * t] + 4, v)) {
+      wrong.tet_region[t] = 2;
+      break;
+    }
+  EXPECT_NE(violation(m, wrong), "");
+  // Lost vertices are refused as before.
+  TetMesh fewer = m;
+  EXPECT_EQ(violation(after, fewer).find("lost vertices") != std::string::npos, true);
 }
 
 TEST(VerifyOptimized, DetectsAMissingOrChangedPhysicalGroup) {
