@@ -14,6 +14,7 @@
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "core/util/error.h"
+#include "core/util/thread_count.h"
 
 namespace cvtmesh {
 namespace {
@@ -181,6 +182,9 @@ std::vector<std::string> methods_for_dim(int dim) {
 }
 
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
+  // Our thread count for the parallel loops (Gmsh may have set the process's to 1), the caller's
+  // back on return.
+  const ThreadCountScope threads;
   OptimizeResult r;
   const auto t0 = std::chrono::steady_clock::now();
   if (data.dim == 3) {

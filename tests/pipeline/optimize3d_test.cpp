@@ -78,3 +78,35 @@ TEST(Optimize3d, LloydMethodsReportNotConvergedWhenStoppedByTheIterationLimit) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+#include <omp.h>
+
+#include "core/util/thread_count.h"
+
+namespace cvtmesh {
+namespace {
+
+// Gmsh sets the process's OpenMP thread count to its General.NumThreads (1 here) whenever a mesh
+// is read: optimize must run its loops on our count (default_thread_count) anyway, and give the
+// caller's count back afterwards.
+TEST(Optimize3d, RunsOnItsOwnThreadCountAndRestoresTheCallers) {
+  const MeshData init = testing::cube_sphere(0.2, 0.15);  // read through Gmsh
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  MeshData d = init;
+  OptimizeOptions o;
+  o.method = "cvdt";
+  o.max_iterations = 2;
+  std::vector<int> seen;
+  o.progress = [&](const OptimizeProgress&) { seen.push_back(omp_get_max_threads()); };
+  optimize(d, o);
+  const int after = omp_get_max_threads();
+  omp_set_num_threads(saved);
+  ASSERT_FALSE(seen.empty());
+  for (int n : seen) EXPECT_EQ(n, default_thread_count());
+  EXPECT_EQ(after, 1);
+  EXPECT_GE(default_thread_count(), 1);
+}
+
+}  // namespace
+}  // namespace cvtmesh
