@@ -25,67 +25,108 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
   const VertexTets star = vertex_tets(mesh);
   std::vector<double> q(static_cast<std::size_t>(nt), std::numeric_limits<double>::infinity());
+#pragma omp parallel for schedule(static, 1024)
   for (int t = 0; t < nt; ++t)
     if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0)
       q[t] = quality_of(mesh, t, options.measure);
   SmoothStats stats;
   stats.min_before = nt ? *std::min_element(q.begin(), q.end()) : 0;
 
-  std::vector<int> nbrs;
-  std::vector<double> new_q;
-  for (int pass = 0; pass < options.passes; ++pass) {
-    ++stats.passes;
+  // Multi-colour Gauss-Seidel: the interior vertices are coloured greedily in vertex order so
+  // that no two vertices of a colour share a tet; the vertices of one colour then move
+  // independently (each reads its neighbours, of other colours, and writes its own point and the
+  // qualities of its own star), in parallel, and the result does not depend on the thread count.
+  std::vector<int> colour(nv, -1), colour_offset, by_colour;
+  {
+    std::vector<int> mark;  // mark[c] == v: colour c is taken by a neighbour of v
+    int nb_colours = 0;
     for (int v = 0; v < nv; ++v) {
       if (mesh.vclass[v].dim < 3 || star.nb_tets_of(v) == 0) continue;
-      // The adjacent vertices: the other vertices of the star.
-      nbrs.clear();
-      double old_min = std::numeric_limits<double>::infinity();
-      for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
-        old_min = std::min(old_min, q[*t]);
+      for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
         for (int k = 0; k < 4; ++k) {
-          const int w = mesh.tets[4 * static_cast<std::size_t>(*t) + k];
-          if (w != v) nbrs.push_back(w);
+          const int c = colour[mesh.tets[4 * static_cast<std::size_t>(*t) + k]];
+          if (c >= 0) mark[c] = v;
         }
-      }
-      std::sort(nbrs.begin(), nbrs.end());
-      nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
-      double target[3] = {0, 0, 0};
-      for (int w : nbrs)
-        for (int k = 0; k < 3; ++k) target[k] += mesh.point(w)[k];
-      for (int k = 0; k < 3; ++k) target[k] /= static_cast<double>(nbrs.size());
-
-      double* P = mesh.point(v);
-      const double orig[3] = {P[0], P[1], P[2]};
-      bool moved = false;
-      for (int attempt = 0; attempt < (options.half_step ? 2 : 1) && !moved; ++attempt) {
-        const double s = attempt == 0 ? 1.0 : 0.5;
-        for (int k = 0; k < 3; ++k) P[k] = orig[k] + s * (target[k] - orig[k]);
-        new_q.clear();
-        bool ok = true;
-        double new_min = std::numeric_limits<double>::infinity();
-        for (const int* t = star.begin_of(v); t != star.end_of(v) && ok; ++t) {
-          const int* tv = &mesh.tets[4 * static_cast<std::size_t>(*t)];
-          if (orient3d(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]),
-                       mesh.point(tv[3])) <= 0) {
-            ok = false;
-            break;
+      int c = 0;
+      while (c < nb_colours && mark[c] == v) ++c;
+      if (c == nb_colours) mark.push_back(-1), ++nb_colours;
+      colour[v] = c;
+    }
+    colour_offset.assign(nb_colours + 1, 0);
+    for (int v = 0; v < nv; ++v)
+      if (colour[v] >= 0) ++colour_offset[colour[v] + 1];
+    for (int c = 0; c < nb_colours; ++c) colour_offset[c + 1] += colour_offset[c];
+    by_colour.resize(colour_offset[nb_colours]);
+    std::vector<int> fill(colour_offset.begin(), colour_offset.end() - 1);
+    for (int v = 0; v < nv; ++v)
+      if (colour[v] >= 0) by_colour[fill[colour[v]]++] = v;
+  }
+  const int nb_colours = static_cast<int>(colour_offset.size()) - 1;
+  long nb_moved = 0, nb_half = 0, nb_rejected = 0;
+  for (int pass = 0; pass < options.passes; ++pass) {
+    ++stats.passes;
+    for (int c = 0; c < nb_colours; ++c) {
+#pragma omp parallel reduction(+ : nb_moved, nb_half, nb_rejected)
+      {
+        std::vector<int> nbrs;
+        std::vector<double> new_q;
+#pragma omp for schedule(static, 256)
+        for (int i = colour_offset[c]; i < colour_offset[c + 1]; ++i) {
+          const int v = by_colour[i];
+          // The adjacent vertices: the other vertices of the star.
+          nbrs.clear();
+          double old_min = std::numeric_limits<double>::infinity();
+          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
+            old_min = std::min(old_min, q[*t]);
+            for (int k = 0; k < 4; ++k) {
+              const int w = mesh.tets[4 * static_cast<std::size_t>(*t) + k];
+              if (w != v) nbrs.push_back(w);
+            }
           }
-          new_q.push_back(quality_of(mesh, *t, options.measure));
-          new_min = std::min(new_min, new_q.back());
+          std::sort(nbrs.begin(), nbrs.end());
+          nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+          double target[3] = {0, 0, 0};
+          for (int w : nbrs)
+            for (int k = 0; k < 3; ++k) target[k] += mesh.point(w)[k];
+          for (int k = 0; k < 3; ++k) target[k] /= static_cast<double>(nbrs.size());
+
+          double* P = mesh.point(v);
+          const double orig[3] = {P[0], P[1], P[2]};
+          bool moved = false;
+          for (int attempt = 0; attempt < (options.half_step ? 2 : 1) && !moved; ++attempt) {
+            const double s = attempt == 0 ? 1.0 : 0.5;
+            for (int k = 0; k < 3; ++k) P[k] = orig[k] + s * (target[k] - orig[k]);
+            new_q.clear();
+            bool ok = true;
+            double new_min = std::numeric_limits<double>::infinity();
+            for (const int* t = star.begin_of(v); t != star.end_of(v) && ok; ++t) {
+              const int* tv = &mesh.tets[4 * static_cast<std::size_t>(*t)];
+              if (orient3d(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]),
+                           mesh.point(tv[3])) <= 0) {
+                ok = false;
+                break;
+              }
+              new_q.push_back(quality_of(mesh, *t, options.measure));
+              new_min = std::min(new_min, new_q.back());
+            }
+            if (ok && new_min >= old_min) {
+              moved = true;
+              std::size_t j = 0;
+              for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) q[*t] = new_q[j++];
+              ++(attempt == 0 ? nb_moved : nb_half);
+            }
+          }
+          if (!moved) {
+            for (int k = 0; k < 3; ++k) P[k] = orig[k];
+            ++nb_rejected;
+          }
         }
-        if (ok && new_min >= old_min) {
-          moved = true;
-          std::size_t i = 0;
-          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) q[*t] = new_q[i++];
-          ++(attempt == 0 ? stats.nb_moved : stats.nb_half);
-        }
-      }
-      if (!moved) {
-        for (int k = 0; k < 3; ++k) P[k] = orig[k];
-        ++stats.nb_rejected;
       }
     }
   }
+  stats.nb_moved = nb_moved;
+  stats.nb_half = nb_half;
+  stats.nb_rejected = nb_rejected;
   stats.min_after = nt ? *std::min_element(q.begin(), q.end()) : 0;
   return stats;
 }

@@ -9,7 +9,10 @@
 namespace cvtmesh {
 
 struct SmoothOptions {
-  int passes = 1;  // Gauss-Seidel sweeps over the interior vertices, in vertex order
+  // Gauss-Seidel sweeps over the interior vertices, colour by colour (a greedy colouring in vertex
+  // order: no two vertices of a colour share a tet, so each colour moves in parallel; the result
+  // does not depend on the number of threads).
+  int passes = 1;
   // Larger-is-better measure of the local-minimum guard: kQ (default), kMinAngle, kRadiusRatio,
   // kGmshIcn. kMaxAngle throws std::invalid_argument.
   Measure measure = Measure::kQ;
