@@ -66,7 +66,8 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   for (int pass = 0; pass < options.passes; ++pass) {
     ++stats.passes;
     for (int c = 0; c < nb_colours; ++c) {
-#pragma omp parallel reduction(+ : nb_moved, nb_half, nb_rejected)
+      // Small colours (coarse meshes) run on one thread: a fork/join per colour would cost more.
+#pragma omp parallel reduction(+ : nb_moved, nb_half, nb_rejected) if (colour_offset[c + 1] - colour_offset[c] > 2048)
       {
         std::vector<int> nbrs;
         std::vector<double> new_q;
