@@ -9,7 +9,6 @@
 #include "core/cvt/cell_mesh.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/delaunay/delaunay3.h"
-#include "core/geometry/predicates.h"
 #include "core/delaunay/relocate_vertices3.h"
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/locate_point.h"
@@ -400,16 +399,7 @@ class Lloyd3Problem {
         throw InvariantError("Lloyd iteration produced an invalid mesh: " +
                              (c.problems.empty() ? std::string("?") : c.problems.front()));
     } else {
-      const int nt = m_.nb_tets();
-      int bad = -1;
-#pragma omp parallel for schedule(static, 1024) reduction(max : bad)
-      for (int t = 0; t < nt; ++t) {
-        const int* tv = &m_.tets[4 * t];
-        if (tv[0] >= 0 &&
-            orient3d(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), m_.point(tv[3])) <= 0)
-          bad = std::max(bad, t);
-      }
-      if (bad >= 0)
+      if (const int bad = last_non_positive_tet(m_); bad >= 0)
         throw InvariantError("Lloyd iteration produced an invalid mesh: tet " +
                              std::to_string(bad) + " is inverted or flat");
     }

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/geometry/predicates.h"
+#include "core/mesh/check_mesh.h"
 #include "core/mesh/vertex_tets.h"
 #include "core/swap/apply_swap.h"
 #include "core/swap/compact_tets.h"
@@ -92,14 +93,7 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFace
                                                bool check_orientation) {
   RestoreDelaunayStats st;
   const int nt = m.nb_tets();
-  bool inverted = false;
-#pragma omp parallel for schedule(static, 1024) reduction(|| : inverted) if (check_orientation)
-  for (int t = 0; t < (check_orientation ? nt : 0); ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] >= 0 && orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0)
-      inverted = true;
-  }
-  if (inverted) {
+  if (check_orientation && last_non_positive_tet(m) >= 0) {
     st.inverted = true;
     return st;
   }
@@ -116,14 +110,6 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFace
       if (bad[t] >> f & 1) stack.push_back({t, f});
   flip_until_delaunay(m, cf, stack, st);
   return st;
-}
-
-RestoreDelaunayStats restore_delaunay_around(TetMesh& m, const ConstrainedFaces& cf,
-                                             const std::vector<int>& moved) {
-  const VertexTets star = vertex_tets_of(m, moved);
-  std::vector<int> tets;
-  for (int v : moved) tets.insert(tets.end(), star.begin_of(v), star.end_of(v));
-  return restore_delaunay_in(m, cf, tets);
 }
 
 RestoreDelaunayStats restore_delaunay_in(TetMesh& m, const ConstrainedFaces& cf,

@@ -27,14 +27,10 @@ struct RestoreDelaunayStats {
 RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& mesh, const ConstrainedFaces& constrained,
                                                bool check_orientation = true);
 
-// The same, when only the vertices `moved` changed since the mesh was valid and constrained
-// Delaunay except where noted: only the faces of their stars are tested at first (then whatever
-// the flips touch), and the orientation check is left to the caller (each move kept its star
-// positively oriented).
-RestoreDelaunayStats restore_delaunay_around(TetMesh& mesh, const ConstrainedFaces& constrained,
-                                             const std::vector<int>& moved);
-
-// The same, starting from the faces of the live tets `tets` (ids of the current mesh).
+// The same, when only the tets `tets` (live ids of the current mesh; e.g. the stars of the
+// vertices that moved since the mesh was valid and constrained Delaunay) can have non-Delaunay
+// faces: only their faces are tested at first (then whatever the flips touch), and the
+// orientation check is left to the caller (each move kept its star positively oriented).
 RestoreDelaunayStats restore_delaunay_in(TetMesh& mesh, const ConstrainedFaces& constrained,
                                          const std::vector<int>& tets);
 

@@ -19,6 +19,18 @@ void problem(MeshCheck& r, const std::string& msg) {
 
 }  // namespace
 
+int last_non_positive_tet(const TetMesh& m) {
+  const int nt = m.nb_tets();
+  int bad = -1;
+#pragma omp parallel for schedule(static, 1024) reduction(max : bad)
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &m.tets[4 * t];
+    if (tv[0] >= 0 && orient3d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])) <= 0)
+      bad = std::max(bad, t);
+  }
+  return bad;
+}
+
 MeshCheck check_mesh(const TetMesh& m) {
   MeshCheck r;
   const int nv = m.nb_vertices(), nt = m.nb_tets();

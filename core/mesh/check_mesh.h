@@ -23,6 +23,10 @@ struct MeshCheck {
 // every boundary face of the tet complex is a constrained triangle and every constrained
 // triangle is a face of the complex (boundary closed, interfaces present).
 MeshCheck check_mesh(const TetMesh& mesh);
+
+// The largest id of a live tet that is not positively oriented (exact orient3d), -1 if none;
+// in parallel (the result does not depend on the thread count). Vertex ids must be in range.
+int last_non_positive_tet(const TetMesh& mesh);
 // The same for a planar triangle mesh (counter-clockwise triangles, boundary edges).
 MeshCheck check_mesh(const TriMesh2& mesh);
 

@@ -46,26 +46,18 @@ void bounding_box(const TetMesh& m, double* lo, double* scale) {
 
 }  // namespace
 
-void sort_all_vertices_spatially(TetMesh& m) {
-  const int nv = m.nb_vertices();
-  double lo[3], scale[3];
-  bounding_box(m, lo, scale);
-  std::vector<std::pair<std::uint64_t, int>> key(nv);
-  for (int v = 0; v < nv; ++v) key[v] = {morton(m.point(v), lo, scale), v};
-  std::sort(key.begin(), key.end());
-  std::vector<int> new_id(nv);
-  for (int i = 0; i < nv; ++i) new_id[key[i].second] = i;
-  permute_vertices(m, new_id);
-}
+namespace {
 
-void sort_free_vertices_spatially(TetMesh& m) {
+// Renumbers the vertices v with selected(v) along the Morton curve, within their own ids.
+template <class Selected>
+void sort_vertices_spatially(TetMesh& m, Selected selected) {
   const int nv = m.nb_vertices();
   double lo[3], scale[3];
   bounding_box(m, lo, scale);
   std::vector<int> slots;
   std::vector<std::pair<std::uint64_t, int>> key;
   for (int v = 0; v < nv; ++v)
-    if (m.vclass[v].dim == 3) {
+    if (selected(v)) {
       slots.push_back(v);
       key.push_back({morton(m.point(v), lo, scale), v});
     }
@@ -74,6 +66,16 @@ void sort_free_vertices_spatially(TetMesh& m) {
   for (int v = 0; v < nv; ++v) new_id[v] = v;
   for (std::size_t i = 0; i < key.size(); ++i) new_id[key[i].second] = slots[i];
   permute_vertices(m, new_id);
+}
+
+}  // namespace
+
+void sort_all_vertices_spatially(TetMesh& m) {
+  sort_vertices_spatially(m, [](int) { return true; });
+}
+
+void sort_free_vertices_spatially(TetMesh& m) {
+  sort_vertices_spatially(m, [&m](int v) { return m.vclass[v].dim == 3; });
 }
 
 void sort_tets_spatially(TetMesh& m) {
