@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/cvt/lloyd.h"
+#include "core/cvt/lloyd3_cells.h"  // voronoi_centroids_3d
 #include "core/cvt/sizing_field3.h"
 #include "core/mesh/tet_mesh.h"
 
@@ -54,15 +55,5 @@ struct Lloyd3Options {
 // exit). Throws InvariantError if an iteration breaks an invariant.
 LloydResult lloyd_optimize_3d(TetMesh& mesh, const Lloyd3Options& options,
                               const std::function<void(const LloydStep&)>& progress = nullptr);
-
-// The CVT energy F = sum_i int_{V_i ∩ region} rho |x - z_i|^2 of the current mesh (all vertices),
-// and the centroid of every vertex's restricted cell (3 per vertex). Exposed for tests.
-struct CellCentroids {
-  std::vector<double> centroid;  // 3 * #V (fixed vertices included)
-  std::vector<double> mass;      // #V
-  double energy = 0;
-};
-CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
-                                   std::vector<int>* sizing_hints = nullptr);
 
 }  // namespace cvtmesh

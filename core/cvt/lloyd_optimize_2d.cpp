@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/cvt/anderson.h"
+#include "core/cvt/lbfgs.h"
 #include "core/cvt/voronoi_centroids2d.h"
 #include "core/delaunay/cdt2d_locate.h"
 #include "core/delaunay/cdt2d_remesh.h"
@@ -28,10 +29,23 @@ double uniform01(std::mt19937& g) {
   return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) / 9007199254740992.0;
 }
 
+// The 2D line search: halvings of the nominal step (at most 10), Armijo on it, H0 = 1 / (2 m);
+// when it gives up, the plain Lloyd step and a fresh start.
+LbfgsRules lbfgs_rules(const Lloyd2dOptions& o) {
+  LbfgsRules r;
+  r.memory = o.lbfgs_memory;
+  r.max_trials = 10;
+  r.backtrack = LbfgsRules::Backtrack::kHalve;
+  r.armijo_on_actual_move = false;
+  r.lloyd_direction_untested = false;
+  r.fallback = LbfgsRules::Fallback::kRestart;
+  return r;
+}
+
 class Lloyd2dProblem {
  public:
   Lloyd2dProblem(TriMesh2& mesh, const Lloyd2dOptions& o, const SizingField2d& sizing)
-      : mesh_(mesh), o_(o), sizing_(sizing), mixer_(o.anderson_depth) {
+      : mesh_(mesh), o_(o), sizing_(sizing), mixer_(o.anderson_depth), lbfgs_(lbfgs_rules(o)) {
     std::vector<char> on_edge(mesh.nb_vertices(), 0);
     for (int v : mesh.edges) on_edge[v] = 1;
     for (int v = 0; v < mesh.nb_vertices(); ++v)
@@ -124,135 +138,109 @@ class Lloyd2dProblem {
     return s;
   }
 
-  // One L-BFGS iteration on F (Liu et al. 2009): gradient dF/dz_i = 2 m_i (z_i - c_i), initial
-  // inverse Hessian diag(1 / (2 m_i)) (so the first direction is Lloyd's step), a backtracking
-  // line search (Armijo, at most 10 halvings) over steps whose every target stays strictly inside
-  // its surface, the mesh rebuilt (constrained Delaunay) at each trial. If no step is accepted, the
-  // plain Lloyd step is taken and the memory cleared (LloydStep::restarted).
+  // One L-BFGS iteration on F (lbfgs.h; Liu et al. 2009): gradient dF/dz_i = 2 m_i (z_i - c_i),
+  // initial inverse Hessian diag(1 / (2 m_i)) (so the first direction is Lloyd's step), a
+  // backtracking line search (Armijo on the nominal step, at most 10 halvings) over steps whose
+  // every target stays strictly inside its surface, the mesh rebuilt (constrained Delaunay) at
+  // each trial. If no step is accepted, the plain Lloyd step is taken and the memory cleared
+  // (LloydStep::restarted).
   LloydStep step_lbfgs() {
     LloydStep s;
     s.hop = hop_;
     const std::size_t n = free_.size();
     s.nb_free = static_cast<int>(n);
-    if (!have_cells_) cells_ = voronoi_centroids2d(mesh_, density_), have_cells_ = true;
-    double F = 0;
-    for (const VoronoiCell2d& c : cells_) F += c.energy;
-    s.energy = F;
-    std::vector<double> z(2 * n), g(2 * n), h0(2 * n);
+    if (!have_cells_) {  // a first point (the start, or after a plain Lloyd step)
+      cells_ = voronoi_centroids2d(mesh_, density_), have_cells_ = true;
+      lbfgs_.tell(lbfgs_point(cells_));
+    }
+    s.energy = lbfgs_.current().energy;
     double D = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      const int v = free_[k];
-      const VoronoiCell2d& c = cells_[v];
-      const double* p = mesh_.point(v);
+      const VoronoiCell2d& c = cells_[free_[k]];
+      const double* p = mesh_.point(free_[k]);
       const double h = sizing_.size(p);
-      for (int d = 0; d < 2; ++d) {
-        z[2 * k + d] = p[d];
-        g[2 * k + d] = 2 * c.mass * (p[d] - c.centroid[d]);
-        h0[2 * k + d] = c.mass > 0 ? 1 / (2 * c.mass) : 0;
-      }
       const double dx = c.centroid[0] - p[0], dy = c.centroid[1] - p[1];
       D += (dx * dx + dy * dy) / (h * h);
     }
     s.D = n ? D / static_cast<double>(n) : 0;
     if (s.D < o_.lloyd.tolerance) return s;  // converged: lloyd_iterate stops, nothing to move
 
-    auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
-      double r = 0;
-      for (std::size_t k = 0; k < a.size(); ++k) r += a[k] * b[k];
-      return r;
-    };
-    // Two-loop recursion: p = -H g.
-    std::vector<double> q = g;
-    const int m = static_cast<int>(mem_s_.size());
-    std::vector<double> alpha(m);
-    for (int i = m - 1; i >= 0; --i) {
-      alpha[i] = mem_rho_[i] * dot(mem_s_[i], q);
-      for (std::size_t k = 0; k < q.size(); ++k) q[k] -= alpha[i] * mem_y_[i][k];
-    }
-    for (std::size_t k = 0; k < q.size(); ++k) q[k] *= h0[k];
-    for (int i = 0; i < m; ++i) {
-      const double beta = mem_rho_[i] * dot(mem_y_[i], q);
-      for (std::size_t k = 0; k < q.size(); ++k) q[k] += mem_s_[i][k] * (alpha[i] - beta);
-    }
-    std::vector<double> dir(2 * n);
-    for (std::size_t k = 0; k < dir.size(); ++k) dir[k] = -q[k];
-    double gp = dot(g, dir);
-    if (!(gp < 0)) {  // not a descent direction: Lloyd's
-      clear_memory();
-      for (std::size_t k = 0; k < dir.size(); ++k) dir[k] = -h0[k] * g[k];
-      gp = dot(g, dir);
-    }
-
     prepare_safeguard();
     const TriMesh2 backup = mesh_;
-    double a = 1;
-    bool ok = false;
-    std::vector<double> target(2 * n);
-    for (int ls = 0; ls < 10 && !ok; ++ls, a *= 0.5) {
+    for (;;) {
+      const std::vector<double> target = lbfgs_.trial_point();
       bool inside = true;
-      for (std::size_t k = 0; k < n && inside; ++k) {
-        target[2 * k] = z[2 * k] + a * dir[2 * k];
-        target[2 * k + 1] = z[2 * k + 1] + a * dir[2 * k + 1];
+      for (std::size_t k = 0; k < n && inside; ++k)
         inside = strictly_inside(free_[k], &target[2 * k]);
-      }
-      if (!inside) continue;
-      for (std::size_t k = 0; k < n; ++k) {
-        double* p = mesh_.point(free_[k]);
-        p[0] = target[2 * k], p[1] = target[2 * k + 1];
-      }
-      cdt2d_remesh(mesh_);
-      std::vector<VoronoiCell2d> trial = voronoi_centroids2d(mesh_, density_);
-      double Fn = 0;
-      for (const VoronoiCell2d& c : trial) Fn += c.energy;
-      if (Fn <= F + 1e-4 * a * gp) {
-        ok = true;
-        cells_ = std::move(trial);
+      LbfgsVerdict verdict;
+      if (!inside) {
+        verdict = lbfgs_.reject_unevaluated();
       } else {
-        mesh_ = backup;
+        for (std::size_t k = 0; k < n; ++k) {
+          double* p = mesh_.point(free_[k]);
+          p[0] = target[2 * k], p[1] = target[2 * k + 1];
+        }
+        cdt2d_remesh(mesh_);
+        std::vector<VoronoiCell2d> trial = voronoi_centroids2d(mesh_, density_);
+        verdict = lbfgs_.tell(lbfgs_point(trial));
+        if (verdict == LbfgsVerdict::kAccepted)
+          cells_ = std::move(trial);
+        else
+          mesh_ = backup;
       }
+      if (verdict == LbfgsVerdict::kAccepted) break;
+      if (verdict == LbfgsVerdict::kExhausted) return plain_lloyd_step(s);
     }
-    if (!ok) {  // the plain Lloyd step (lowers F for the current partition)
-      s.restarted = true;
-      clear_memory();
-      std::vector<double> next(2 * n);
-      for (std::size_t k = 0; k < n; ++k) {
-        const double* c = cells_[free_[k]].centroid;
-        if (!safe_target(free_[k], c, &next[2 * k])) ++s.nb_limited;
-      }
-      for (std::size_t k = 0; k < n; ++k) {
-        double* p = mesh_.point(free_[k]);
-        p[0] = next[2 * k], p[1] = next[2 * k + 1];
-      }
-      cdt2d_remesh(mesh_);
-      have_cells_ = false;
-      return s;
-    }
-    if (a < 1) ++s.nb_limited;
-    // Memory update with the new gradient.
-    std::vector<double> sv(2 * n), yv(2 * n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const VoronoiCell2d& c = cells_[free_[k]];
-      const double* p = mesh_.point(free_[k]);
-      for (int d = 0; d < 2; ++d) {
-        sv[2 * k + d] = p[d] - z[2 * k + d];
-        yv[2 * k + d] = 2 * c.mass * (p[d] - c.centroid[d]) - g[2 * k + d];
-      }
-    }
-    const double sy = dot(sv, yv);
-    if (sy > 1e-12 * std::sqrt(dot(sv, sv) * dot(yv, yv))) {
-      mem_s_.push_back(std::move(sv));
-      mem_y_.push_back(std::move(yv));
-      mem_rho_.push_back(1 / sy);
-      if (static_cast<int>(mem_s_.size()) > o_.lbfgs_memory) {
-        mem_s_.erase(mem_s_.begin());
-        mem_y_.erase(mem_y_.begin());
-        mem_rho_.erase(mem_rho_.begin());
-      }
-    }
+    // Counted for every accepted step (the line search's loop used to halve its step once more
+    // after accepting it, then counted steps below 1).
+    ++s.nb_limited;
     return s;
   }
 
  private:
+  // The L-BFGS point of the current mesh, whose cells are `cells`: F over all cells, the free
+  // positions, dF/dz = 2 m (z - c), H0 = diag(1 / (2 m)) and the Lloyd step -H0 g.
+  LbfgsPoint lbfgs_point(const std::vector<VoronoiCell2d>& cells) const {
+    const std::size_t n = free_.size();
+    LbfgsPoint pt;
+    for (const VoronoiCell2d& c : cells) pt.energy += c.energy;
+    pt.x.resize(2 * n), pt.gradient.resize(2 * n), pt.lloyd_step.resize(2 * n);
+    std::vector<double> h0(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const VoronoiCell2d& c = cells[free_[k]];
+      const double* p = mesh_.point(free_[k]);
+      for (int d = 0; d < 2; ++d) {
+        pt.x[2 * k + d] = p[d];
+        pt.gradient[2 * k + d] = 2 * c.mass * (p[d] - c.centroid[d]);
+        h0[2 * k + d] = c.mass > 0 ? 1 / (2 * c.mass) : 0;
+        pt.lloyd_step[2 * k + d] = -h0[2 * k + d] * pt.gradient[2 * k + d];
+      }
+    }
+    pt.initial_inverse_hessian = [h0 = std::move(h0)](std::vector<double>& q) {
+      for (std::size_t k = 0; k < q.size(); ++k) q[k] *= h0[k];
+    };
+    return pt;
+  }
+
+  // The L-BFGS line search gave up: the plain Lloyd step (lowers F for the current partition),
+  // from which the minimiser starts afresh.
+  LloydStep plain_lloyd_step(LloydStep& s) {
+    s.restarted = true;
+    const std::size_t n = free_.size();
+    std::vector<double> next(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double* c = cells_[free_[k]].centroid;
+      if (!safe_target(free_[k], c, &next[2 * k])) ++s.nb_limited;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double* p = mesh_.point(free_[k]);
+      p[0] = next[2 * k], p[1] = next[2 * k + 1];
+    }
+    cdt2d_remesh(mesh_);
+    have_cells_ = false;
+    return s;
+  }
+
   // Constrained slots and a triangle at each vertex of the current mesh, for safe_target.
   void prepare_safeguard() {
     const int nt = mesh_.nb_tris();
@@ -277,12 +265,6 @@ class Lloyd2dProblem {
     const Locate2dResult r = locate2d(mesh_, p, vtri_[v], stop_);
     return r.tri >= 0 && (r.on_vertex < 0 || r.on_vertex == v) &&
            (r.on_edge < 0 || !stop_[3 * r.tri + r.on_edge]);
-  }
-
-  void clear_memory() {
-    mem_s_.clear();
-    mem_y_.clear();
-    mem_rho_.clear();
   }
 
   // The move of v towards goal, halved until the point is strictly inside v's surface (reached
@@ -314,11 +296,10 @@ class Lloyd2dProblem {
   double accepted_energy_ = 0;
   std::vector<double> accepted_plain_;
   int hop_ = 0;
-  // L-BFGS: centroids at the current mesh (valid if have_cells_), memory pairs.
+  // L-BFGS: centroids at the current mesh (valid if have_cells_, then told to lbfgs_).
   bool have_cells_ = false;
   std::vector<VoronoiCell2d> cells_;
-  std::vector<std::vector<double>> mem_s_, mem_y_;
-  std::vector<double> mem_rho_;
+  LbfgsMinimizer lbfgs_;
 };
 
 }  // namespace

@@ -1,0 +1,64 @@
+#include "core/cvt/lloyd3_reinsert.h"
+
+#include <string>
+
+#include "core/delaunay/relocate_vertices3.h"
+#include "core/mesh/check_mesh.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+
+Reinsertion reinsert_vertices3(TetMesh& m, const ConstrainedFaces& constrained,
+                               const std::vector<double>& target, bool local_flips,
+                               double max_flip_leftover, Delaunay3& backend, LloydStep& s) {
+  const int nv = m.nb_vertices();
+  bool restored = false;
+  bool delaunay = false;
+  if (local_flips) {
+    const RelocateStats rs = relocate_vertices(m, constrained, target);
+    s.nb_flips = rs.nb_flips;
+    s.nb_stuck_faces = rs.nb_stuck;
+    s.nb_short_moves = rs.nb_pending;
+    // Short moves leave a Delaunay mesh of the points where they are.
+    delaunay = rs.nb_stuck == 0;
+    // Faces the flips cannot make Delaunay are next to the boundary where the constrained
+    // Delaunay mesh does not exist without Steiner points (TetGen's rebuild leaves such faces
+    // too): they do not call for a rebuild. Vertices short of their targets do, beyond a few.
+    restored = rs.ok || rs.nb_pending <= max_flip_leftover * nv;
+  }
+  // After successful flips every unconstrained face is locally Delaunay; TetGen's rebuild
+  // leaves a few non-Delaunay faces near the boundary.
+  Reinsertion r;
+  r.delaunay = delaunay;
+  r.mesh_is_cdt = delaunay || !restored;
+  if (!restored) {
+    m.xyz = target;
+    r.nb_steiner = backend.retetrahedralize(m).nb_steiner;
+    s.rebuilt = true;
+  }
+  return r;
+}
+
+void verify_lloyd3_mesh(const TetMesh& m, bool full) {
+  if (full) {
+    const MeshCheck c = check_mesh(m);
+    if (!c.ok)
+      throw InvariantError("Lloyd iteration produced an invalid mesh: " +
+                           (c.problems.empty() ? std::string("?") : c.problems.front()));
+  } else {
+    if (const int bad = last_non_positive_tet(m); bad >= 0)
+      throw InvariantError("Lloyd iteration produced an invalid mesh: tet " + std::to_string(bad) +
+                           " is inverted or flat");
+  }
+  // Every vertex that had tets must still have some (no point lost in a hole).
+  std::vector<char> used(m.nb_vertices(), 0);
+  for (int t = 0; t < m.nb_tets(); ++t)
+    if (m.tets[4 * t] >= 0)
+      for (int k = 0; k < 4; ++k) used[m.tets[4 * t + k]] = 1;
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    if (m.vclass[v].dim == 3 && !used[v])
+      throw InvariantError("Lloyd iteration left interior vertex " + std::to_string(v) +
+                           " outside every tet");
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,34 @@
+// Re-insertion of the moved vertices in the 3D Lloyd iteration (lloyd3.h: local_flips,
+// max_flip_leftover): the vertices follow their targets by exact Lawson flips on the current
+// mesh (relocate_vertices3.h), or the constrained Delaunay mesh of the targets is rebuilt by the
+// backend when the flips leave too many vertices short of their targets (or are off).
+#pragma once
+#include <vector>
+
+#include "core/cvt/lloyd.h"
+#include "core/delaunay/delaunay3.h"
+#include "core/mesh/tet_mesh.h"
+#include "core/swap/constrained_faces.h"
+
+namespace cvtmesh {
+
+struct Reinsertion {
+  bool delaunay = false;    // every unconstrained face is locally Delaunay
+  bool mesh_is_cdt = true;  // the mesh is the constrained Delaunay one of its points
+  int nb_steiner = 0;       // added by a rebuild
+};
+
+// Moves the vertices of `mesh` to `target` (3*#V). Fills s.nb_flips, s.nb_stuck_faces,
+// s.nb_short_moves and s.rebuilt.
+Reinsertion reinsert_vertices3(TetMesh& mesh, const ConstrainedFaces& constrained,
+                               const std::vector<double>& target, bool local_flips,
+                               double max_flip_leftover, Delaunay3& backend, LloydStep& s);
+
+// The mesh after an iteration: full -> check_mesh (orientation, adjacency, closed boundary,
+// constrained triangles present, interfaces); otherwise every live tet's orientation (exact
+// orient3d, in parallel: the moves and flips change connectivity only through apply_swap, whose
+// structure the full check verifies every few iterations and at the end). Then every interior
+// vertex still has tets. Throws InvariantError.
+void verify_lloyd3_mesh(const TetMesh& mesh, bool full);
+
+}  // namespace cvtmesh
