@@ -8,7 +8,7 @@ PKGS=(
   libtet1.5-dev tetgen
   libopenmesh-dev
   libgtest-dev libgmock-dev
-  libcli11-dev libeigen3-dev nlohmann-json3-dev
+  libcli11-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev
   pybind11-dev python3-dev python3
   xvfb xauth xdotool imagemagick
   clang libclang-rt-14-dev

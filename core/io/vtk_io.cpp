@@ -9,9 +9,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
-#include <map>
 #include <sstream>
+
+#include <pugixml.hpp>
 
 #include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
@@ -510,258 +512,200 @@ MeshData read_vtk(const std::string& path, std::vector<ElementField>* fields) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// .vtu: a small scanner for the XML subset VTK writes (elements, attributes, ASCII data).
+// .vtu: the XML parsed by pugixml; the VTK structure (one <Piece> of an UnstructuredGrid, ASCII
+// DataArrays) checked here, every refusal naming the file and the line.
 
 namespace {
 
-struct XmlTag {
-  std::string name;
-  bool closing = false, self_closing = false;
-  std::map<std::string, std::string> attrs;
-  std::size_t begin = 0, end = 0;  // [begin, end) in the text, end just after '>'
-};
-
-class VtuScanner {
+class VtuDocument {
  public:
-  VtuScanner(const std::string& path) : path_(path) {
+  explicit VtuDocument(const std::string& path) : path_(path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError("cannot read '" + path + "': cannot open the file");
     std::ostringstream ss;
     ss << in.rdbuf();
     text_ = ss.str();
     if (text_.empty()) throw InputError("cannot read '" + path + "': the file is empty");
+    const pugi::xml_parse_result r = doc_.load_buffer(text_.data(), text_.size());
+    if (r.status == pugi::status_no_document_element) fail(0, "not a VTK XML file (no <VTKFile>)");
+    if (!r) {
+      std::string why = r.description();  // "Start-end tags mismatch", ...
+      if (!why.empty())
+        why[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(why[0])));
+      // pugixml stops at the end of the text when an element or a tag is still open.
+      const std::size_t at = static_cast<std::size_t>(std::max<std::ptrdiff_t>(r.offset, 0));
+      if (text_.find_first_not_of(" \t\r\n", std::min(at + 1, text_.size())) == std::string::npos)
+        fail(at, "the file ends inside an XML element (truncated file?): " + why);
+      fail(at, "malformed XML: " + why);
+    }
   }
+  pugi::xml_node root() const { return doc_.document_element(); }
   [[noreturn]] void fail(std::size_t at, const std::string& msg) const {
     const long line =
         1 + std::count(text_.begin(), text_.begin() + std::min(at, text_.size()), '\n');
     throw InputError("'" + path_ + "' line " + std::to_string(line) + ": " + msg);
   }
-  // The next tag from pos_ (skipping text, comments, declarations); false at the end.
-  bool next(XmlTag& t) {
-    for (;;) {
-      const std::size_t lt = text_.find('<', pos_);
-      if (lt == std::string::npos) return false;
-      if (text_.compare(lt, 4, "<!--") == 0) {
-        const std::size_t e = text_.find("-->", lt);
-        if (e == std::string::npos) fail(lt, "unterminated comment");
-        pos_ = e + 3;
-        continue;
-      }
-      if (text_.compare(lt, 2, "<?") == 0 || text_.compare(lt, 2, "<!") == 0) {
-        const std::size_t e = text_.find('>', lt);
-        if (e == std::string::npos) fail(lt, "unterminated declaration");
-        pos_ = e + 1;
-        continue;
-      }
-      t = XmlTag{};
-      t.begin = lt;
-      std::size_t p = lt + 1;
-      if (p < text_.size() && text_[p] == '/') {
-        t.closing = true;
-        ++p;
-      }
-      const std::size_t ns = p;
-      while (p < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[p])) ||
-                                  text_[p] == '_' || text_[p] == ':'))
-        ++p;
-      t.name = text_.substr(ns, p - ns);
-      if (t.name.empty()) fail(lt, "malformed XML tag");
-      for (;;) {
-        while (p < text_.size() && std::isspace(static_cast<unsigned char>(text_[p]))) ++p;
-        if (p >= text_.size()) fail(lt, "unterminated XML tag <" + t.name + ">");
-        if (text_[p] == '>') {
-          ++p;
-          break;
-        }
-        if (text_[p] == '/' && p + 1 < text_.size() && text_[p + 1] == '>') {
-          t.self_closing = true;
-          p += 2;
-          break;
-        }
-        const std::size_t as = p;
-        while (p < text_.size() && text_[p] != '=' && text_[p] != '>' &&
-               !std::isspace(static_cast<unsigned char>(text_[p])))
-          ++p;
-        const std::string key = text_.substr(as, p - as);
-        while (p < text_.size() && std::isspace(static_cast<unsigned char>(text_[p]))) ++p;
-        if (key.empty() || p >= text_.size() || text_[p] != '=')
-          fail(lt, "malformed attribute in <" + t.name + ">");
-        ++p;
-        while (p < text_.size() && std::isspace(static_cast<unsigned char>(text_[p]))) ++p;
-        if (p >= text_.size() || (text_[p] != '"' && text_[p] != '\''))
-          fail(lt, "attribute '" + key + "' has no quoted value");
-        const char q = text_[p++];
-        const std::size_t ve = text_.find(q, p);
-        if (ve == std::string::npos) fail(lt, "unterminated attribute value");
-        t.attrs[key] = unescape(text_.substr(p, ve - p));
-        p = ve + 1;
-      }
-      t.end = p;
-      pos_ = p;
-      return true;
-    }
+  [[noreturn]] void fail(const pugi::xml_node& n, const std::string& msg) const {
+    fail(static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0)), msg);
   }
-  // Numbers between the current position and the closing </DataArray>.
+  // The numbers of a <DataArray>, whitespace-separated in its text; `take` says whether a value
+  // is acceptable.
   template <class F>
-  void numbers(const std::string& what, F&& take) {
-    const std::size_t e = text_.find("</DataArray", pos_);
-    if (e == std::string::npos) fail(pos_, "unterminated <DataArray> (truncated file?)");
-    std::size_t p = pos_;
-    while (p < e) {
-      while (p < e && std::isspace(static_cast<unsigned char>(text_[p]))) ++p;
-      if (p >= e) break;
-      std::size_t q = p;
-      while (q < e && !std::isspace(static_cast<unsigned char>(text_[q]))) ++q;
-      const std::string tok = text_.substr(p, q - p);
-      char* end = nullptr;
-      const double v = std::strtod(tok.c_str(), &end);
-      if (end != tok.c_str() + tok.size())
-        fail(p, "expected " + what + " (a number), got '" + tok.substr(0, 40) + "'");
-      if (!take(v)) fail(p, "bad " + what + " '" + tok.substr(0, 40) + "'");
-      p = q;
+  void numbers(const pugi::xml_node& array, const std::string& what, F&& take) const {
+    for (pugi::xml_node t = array.first_child(); t; t = t.next_sibling()) {
+      if (t.type() != pugi::node_pcdata && t.type() != pugi::node_cdata) continue;
+      const char* const text = t.value();
+      long line = 0;  // newlines since the start of the text (parse_eol keeps one per line)
+      for (const char* p = text; *p;) {
+        if (std::isspace(static_cast<unsigned char>(*p))) {
+          line += *p++ == '\n';
+          continue;
+        }
+        const char* q = p;
+        while (*q && !std::isspace(static_cast<unsigned char>(*q))) ++q;
+        char* end = nullptr;
+        const double v = std::strtod(p, &end);
+        const std::string tok(p, std::min<std::size_t>(q - p, 40));
+        if (end != q) fail_in(t, line, "expected " + what + " (a number), got '" + tok + "'");
+        if (!take(v)) fail_in(t, line, "bad " + what + " '" + tok + "'");
+        p = q;
+      }
     }
-    pos_ = e;
   }
-  std::size_t pos() const { return pos_; }
 
  private:
-  static std::string unescape(const std::string& s) {
-    std::string r;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      if (s[i] == '&') {
-        static const std::pair<const char*, char> k[] = {
-            {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
-        bool done = false;
-        for (const auto& [ent, ch] : k)
-          if (s.compare(i, std::strlen(ent), ent) == 0) {
-            r += ch;
-            i += std::strlen(ent) - 1;
-            done = true;
-            break;
-          }
-        if (done) continue;
-      }
-      r += s[i];
-    }
-    return r;
+  [[noreturn]] void fail_in(const pugi::xml_node& text, long newlines,
+                            const std::string& msg) const {
+    const std::size_t at =
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(text.offset_debug(), 0));
+    const long line =
+        1 + newlines + std::count(text_.begin(), text_.begin() + std::min(at, text_.size()), '\n');
+    throw InputError("'" + path_ + "' line " + std::to_string(line) + ": " + msg);
   }
+
   std::string path_, text_;
-  std::size_t pos_ = 0;
+  pugi::xml_document doc_;
 };
 
 bool integral(double v) {
   return v == std::floor(v) && std::fabs(v) < 9e15;
 }
 
+// A count attribute of <Piece>: a decimal integer in [0, INT_MAX], or -1.
+long long count_attribute(const pugi::xml_node& piece, const char* name) {
+  const std::string s = piece.attribute(name).value();
+  char* e = nullptr;
+  const long long n = std::strtoll(s.c_str(), &e, 10);
+  return s.empty() || *e || n < 0 || n > kMaxInt ? -1 : n;
+}
+
 }  // namespace
 
 MeshData read_vtu(const std::string& path, std::vector<ElementField>* fields) {
-  VtuScanner sc(path);
-  XmlTag t;
-  if (!sc.next(t) || t.name != "VTKFile") sc.fail(0, "not a VTK XML file (no <VTKFile>)");
-  if (t.attrs["type"] != "UnstructuredGrid")
-    sc.fail(t.begin, "VTK XML type '" + t.attrs["type"].substr(0, 40) +
-                         "' is not supported (only UnstructuredGrid)");
-  if (t.attrs.count("compressor"))
-    sc.fail(t.begin, "compressed .vtu files are not supported (write ASCII)");
+  const VtuDocument doc(path);
+  const pugi::xml_node root = doc.root();
+  if (std::strcmp(root.name(), "VTKFile") != 0) doc.fail(root, "not a VTK XML file (no <VTKFile>)");
+  const std::string type = root.attribute("type").value();
+  if (type != "UnstructuredGrid")
+    doc.fail(root,
+             "VTK XML type '" + type.substr(0, 40) + "' is not supported (only UnstructuredGrid)");
+  if (root.attribute("compressor"))
+    doc.fail(root, "compressed .vtu files are not supported (write ASCII)");
+  if (const pugi::xml_node a = root.child("AppendedData"))
+    doc.fail(a, "appended (binary) .vtu data is not supported (write ASCII)");
+  const pugi::xml_node grid = root.child("UnstructuredGrid");
+  const pugi::xml_node piece = grid.child("Piece");
+  if (!piece) doc.fail(root, "no <Piece>");
+  if (const pugi::xml_node second = piece.next_sibling("Piece"))
+    doc.fail(second, "more than one <Piece> is not supported");
+  const long long np = count_attribute(piece, "NumberOfPoints");
+  if (np < 0) doc.fail(piece, "bad NumberOfPoints");
+  const long long nc = count_attribute(piece, "NumberOfCells");
+  if (nc < 0) doc.fail(piece, "bad NumberOfCells");
+
   Grid g;
-  long long np = -1, nc = -1;
-  std::string section;  // Points, Cells, CellData, PointData
   bool have_points = false, have_conn = false, have_offsets = false, have_types = false;
-  int pieces = 0;
-  bool closed = false;
-  while (sc.next(t)) {
-    if (t.name == "VTKFile" && t.closing) {
-      closed = true;
-      break;
-    }
-    if (t.name == "Piece" && !t.closing) {
-      if (++pieces > 1) sc.fail(t.begin, "more than one <Piece> is not supported");
-      char* e = nullptr;
-      np = std::strtoll(t.attrs["NumberOfPoints"].c_str(), &e, 10);
-      if (t.attrs["NumberOfPoints"].empty() || *e || np < 0 || np > kMaxInt)
-        sc.fail(t.begin, "bad NumberOfPoints");
-      nc = std::strtoll(t.attrs["NumberOfCells"].c_str(), &e, 10);
-      if (t.attrs["NumberOfCells"].empty() || *e || nc < 0 || nc > kMaxInt)
-        sc.fail(t.begin, "bad NumberOfCells");
-    } else if (t.name == "Points" || t.name == "Cells" || t.name == "CellData" ||
-               t.name == "PointData") {
-      section = t.closing || t.self_closing ? "" : t.name;
-    } else if (t.name == "AppendedData") {
-      sc.fail(t.begin, "appended (binary) .vtu data is not supported (write ASCII)");
-    } else if (t.name == "DataArray" && !t.closing) {
-      if (np < 0) sc.fail(t.begin, "<DataArray> outside a <Piece>");
-      const std::string fmt = t.attrs.count("format") ? t.attrs["format"] : "ascii";
-      if (fmt != "ascii")
-        sc.fail(t.begin,
-                "DataArray format '" + fmt.substr(0, 40) + "' is not supported (only ascii)");
-      if (t.self_closing) sc.fail(t.begin, "empty <DataArray/>");
-      const std::string name = t.attrs["Name"];
-      const std::string ncs =
-          t.attrs.count("NumberOfComponents") ? t.attrs["NumberOfComponents"] : "1";
-      const long long ncomp = std::atoll(ncs.c_str());
-      if (ncomp < 1 || ncomp > 1000)
-        sc.fail(t.begin, "bad NumberOfComponents '" + ncs.substr(0, 40) + "'");
-      const std::size_t at = t.begin;
-      if (section == "Points") {
-        if (have_points) sc.fail(at, "two point arrays");
-        have_points = true;
-        if (ncomp != 3) sc.fail(at, "points need 3 components");
-        sc.numbers("a point coordinate", [&](double v) {
-          g.xyz.push_back(v);
-          return std::isfinite(v);
-        });
-        if (static_cast<long long>(g.xyz.size()) != 3 * np)
-          sc.fail(at, "the points array has " + std::to_string(g.xyz.size()) +
-                          " values, expected " + std::to_string(3 * np));
-      } else if (section == "Cells" &&
-                 (name == "connectivity" || name == "offsets" || name == "types")) {
-        std::vector<long long> vals;
-        sc.numbers("an integer", [&](double v) {
-          vals.push_back(static_cast<long long>(v));
-          return integral(v) && v >= 0;
-        });
-        if (name == "connectivity") {
-          have_conn = true;
-          g.conn = std::move(vals);
-        } else if (name == "offsets") {
-          have_offsets = true;
-          if (static_cast<long long>(vals.size()) != nc)
-            sc.fail(at, "offsets has " + std::to_string(vals.size()) + " values for " +
-                            std::to_string(nc) + " cells");
-          g.offsets = {0};
-          for (long long o : vals) {
-            if (o < g.offsets.back()) sc.fail(at, "offsets must not decrease");
-            g.offsets.push_back(o);
-          }
-        } else {
-          have_types = true;
-          if (static_cast<long long>(vals.size()) != nc)
-            sc.fail(at, "types has " + std::to_string(vals.size()) + " values for " +
-                            std::to_string(nc) + " cells");
-          g.types = std::move(vals);
+  std::vector<pugi::xml_node> arrays;  // every <DataArray> in the piece, in document order
+  const std::function<void(pugi::xml_node)> collect = [&](pugi::xml_node n) {
+    for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
+      if (c.type() == pugi::node_element) {
+        if (std::strcmp(c.name(), "DataArray") == 0)
+          arrays.push_back(c);
+        else
+          collect(c);
+      }
+  };
+  collect(piece);
+  for (const pugi::xml_node& a : arrays) {
+    // The section: Points, Cells, CellData or PointData (another parent: none).
+    std::string section = a.parent().name();
+    if (section != "Points" && section != "Cells" && section != "CellData" &&
+        section != "PointData")
+      section.clear();
+    const std::string fmt = a.attribute("format") ? a.attribute("format").value() : "ascii";
+    if (fmt != "ascii")
+      doc.fail(a, "DataArray format '" + fmt.substr(0, 40) + "' is not supported (only ascii)");
+    const std::string name = a.attribute("Name").value();
+    const std::string ncs =
+        a.attribute("NumberOfComponents") ? a.attribute("NumberOfComponents").value() : "1";
+    const long long ncomp = std::atoll(ncs.c_str());
+    if (ncomp < 1 || ncomp > 1000)
+      doc.fail(a, "bad NumberOfComponents '" + ncs.substr(0, 40) + "'");
+    if (section == "Points") {
+      if (have_points) doc.fail(a, "two point arrays");
+      have_points = true;
+      if (ncomp != 3) doc.fail(a, "points need 3 components");
+      doc.numbers(a, "a point coordinate", [&](double v) {
+        g.xyz.push_back(v);
+        return std::isfinite(v);
+      });
+      if (static_cast<long long>(g.xyz.size()) != 3 * np)
+        doc.fail(a, "the points array has " + std::to_string(g.xyz.size()) + " values, expected " +
+                        std::to_string(3 * np));
+    } else if (section == "Cells" &&
+               (name == "connectivity" || name == "offsets" || name == "types")) {
+      std::vector<long long> vals;
+      doc.numbers(a, "an integer", [&](double v) {
+        vals.push_back(static_cast<long long>(v));
+        return integral(v) && v >= 0;
+      });
+      if (name == "connectivity") {
+        have_conn = true;
+        g.conn = std::move(vals);
+      } else if (name == "offsets") {
+        have_offsets = true;
+        if (static_cast<long long>(vals.size()) != nc)
+          doc.fail(a, "offsets has " + std::to_string(vals.size()) + " values for " +
+                          std::to_string(nc) + " cells");
+        g.offsets = {0};
+        for (long long o : vals) {
+          if (o < g.offsets.back()) doc.fail(a, "offsets must not decrease");
+          g.offsets.push_back(o);
         }
       } else {
-        std::vector<double> vals;
-        sc.numbers("a data value", [&](double v) {
-          vals.push_back(v);
-          return true;
-        });
-        const long long n = section == "CellData" ? nc : np;
-        if (static_cast<long long>(vals.size()) != n * ncomp)
-          sc.fail(at, "array '" + name.substr(0, 40) + "' has " + std::to_string(vals.size()) +
-                          " values, expected " + std::to_string(n * ncomp));
-        if (section == "CellData" && ncomp == 1) g.cell_arrays.emplace_back(name, std::move(vals));
+        have_types = true;
+        if (static_cast<long long>(vals.size()) != nc)
+          doc.fail(a, "types has " + std::to_string(vals.size()) + " values for " +
+                          std::to_string(nc) + " cells");
+        g.types = std::move(vals);
       }
+    } else {
+      std::vector<double> vals;
+      doc.numbers(a, "a data value", [&](double v) {
+        vals.push_back(v);
+        return true;
+      });
+      const long long n = section == "CellData" ? nc : np;
+      if (static_cast<long long>(vals.size()) != n * ncomp)
+        doc.fail(a, "array '" + name.substr(0, 40) + "' has " + std::to_string(vals.size()) +
+                        " values, expected " + std::to_string(n * ncomp));
+      if (section == "CellData" && ncomp == 1) g.cell_arrays.emplace_back(name, std::move(vals));
     }
   }
-  if (np < 0) sc.fail(sc.pos(), "no <Piece> (truncated file?)");
-  if (!have_points) sc.fail(sc.pos(), "no points array (truncated file?)");
-  if (!have_conn || !have_offsets || !have_types)
-    sc.fail(sc.pos(), "incomplete <Cells> (truncated file?)");
-  if (!closed) sc.fail(sc.pos(), "no closing </VTKFile> (truncated file?)");
+  if (!have_points) doc.fail(piece, "no points array");
+  if (!have_conn || !have_offsets || !have_types) doc.fail(piece, "incomplete <Cells>");
   if (!g.offsets.empty() && g.offsets.back() != static_cast<long long>(g.conn.size()))
-    sc.fail(sc.pos(), "the last offset differs from the connectivity size");
+    doc.fail(piece.child("Cells"), "the last offset differs from the connectivity size");
   return grid_to_mesh(g, path, fields);
 }
 
