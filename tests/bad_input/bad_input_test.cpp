@@ -106,23 +106,38 @@ TEST(BadInputCorpus, OptimizeRefusesEachCaseCleanly) {
   expect_all_applied(skipped);
 }
 
-// Inputs committed as files (fuzzer findings): refused cleanly, message naming the file.
+// Inputs committed as files (tests/bad_input/files/README.md): refused cleanly, message naming
+// the file. Files are named FORMAT_DEFECT.EXT; files sharing a stem form one case (a TetGen
+// .node/.ele set), run on the one whose extension is the FORMAT prefix (the defective one).
 TEST(BadInputCorpus, CommittedRegressionFilesAreRefusedCleanly) {
+  const fs::path dir = testing::bad_input_files_dir();
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && e.path().filename() != "README.md") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
   int n = 0;
-  for (const auto& e : fs::directory_iterator(testing::bad_input_files_dir())) {
-    const std::string name = e.path().filename().string();
-    if (name == "README.md") continue;
+  for (const fs::path& f : files) {
+    const std::string stem = f.stem().string();
+    const std::string input_ext = "." + stem.substr(0, stem.find('_'));
+    if (f.extension() != input_ext && fs::exists(dir / (stem + input_ext)))
+      continue;  // a companion of that input
     BadInputCase c;
-    c.name = name;
-    c.files = {{name, ""}};
-    {
-      std::ifstream in(e.path(), std::ios::binary);
-      c.files[0].second.assign(std::istreambuf_iterator<char>(in), {});
-    }
-    SCOPED_TRACE(name);
+    c.name = f.filename().string();
+    c.files = {{c.name, slurp(f)}};
+    for (const fs::path& other : files)
+      if (other != f && other.stem() == f.stem())
+        c.files.push_back({other.filename().string(), slurp(other)});
+    if (c.name.find("truncated") != std::string::npos) c.message = "truncated";
+    SCOPED_TRACE(c.name);
     expect_refused(c, "convert");
     ++n;
   }
+  // A loop over an empty folder would pass without testing anything.
+  ASSERT_GE(n, 1) << "no regression file in " << dir;
   RecordProperty("files", n);
 }
 
