@@ -11,7 +11,7 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -39,7 +39,54 @@ struct Row {
 
 using Clock = std::chrono::steady_clock;
 
-// Runs job() in a child; the child writes "key value" lines to a pipe. Peak memory from wait4.
+// What a child reports to the parent through the pipe: one JSON object (a Row without the
+// labels and the peak memory, which the parent knows), e.g. {"ok":true,"nb_tets_in":24700,...}
+// or {"ok":false,"error":"..."}. Doubles keep all their digits (nlohmann_json writes the
+// shortest representation that reads back exactly).
+nlohmann::json row_to_json(const Row& r) {
+  if (!r.ok) return {{"ok", false}, {"error", r.error}};
+  return {{"ok", true},
+          {"nb_tets_in", r.nb_tets_in},
+          {"nb_tets_out", r.nb_tets_out},
+          {"seconds", r.seconds},
+          {"iterations", r.iterations},
+          {"q_avg", r.q_avg},
+          {"q_min", r.q_min},
+          {"min_dihedral", r.min_dihedral},
+          {"bad_pct", r.bad_pct},
+          {"s_per_it", r.s_per_it},
+          {"energy", r.energy}};
+}
+
+// Fills `row` from a child's report; a report that is not the expected JSON (the child died
+// while writing it) leaves row.ok false with the reason in row.error.
+void row_from_json(const std::string& text, Row& row) {
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    row.ok = j.at("ok").get<bool>();
+    if (!row.ok) {
+      row.error = j.at("error").get<std::string>();
+      return;
+    }
+    row.nb_tets_in = j.at("nb_tets_in").get<long>();
+    row.nb_tets_out = j.at("nb_tets_out").get<long>();
+    row.seconds = j.at("seconds").get<double>();
+    row.iterations = j.at("iterations").get<int>();
+    row.q_avg = j.at("q_avg").get<double>();
+    row.q_min = j.at("q_min").get<double>();
+    row.min_dihedral = j.at("min_dihedral").get<double>();
+    row.bad_pct = j.at("bad_pct").get<double>();
+    row.s_per_it = j.at("s_per_it").get<double>();
+    row.energy = j.at("energy").get<std::vector<double>>();
+  } catch (const nlohmann::json::exception& e) {
+    row.ok = false;
+    if (row.error.empty())
+      row.error = text.empty() ? "no report" : std::string("bad report: ") + e.what();
+  }
+}
+
+// Runs job() in a child, which writes its Row as JSON to a pipe (row_to_json). Peak memory from
+// wait4.
 Row run_isolated(const std::string& input, const std::string& method,
                  const std::function<void(Row&)>& job) {
   Row row;
@@ -54,21 +101,16 @@ Row run_isolated(const std::string& input, const std::string& method,
   if (pid == 0) {
     close(fd[0]);
     Row r;
-    std::ostringstream out;
     try {
       job(r);
-      out.precision(17);
-      out << "ok 1\nin " << r.nb_tets_in << "\nout " << r.nb_tets_out << "\nsec " << r.seconds
-          << "\nit " << r.iterations << "\navg " << r.q_avg << "\nmin " << r.q_min << "\ndih "
-          << r.min_dihedral << "\nbad " << r.bad_pct << "\nspi " << r.s_per_it << "\n";
-      for (double e : r.energy) out << "energy " << e << "\n";
+      r.ok = true;
     } catch (const std::exception& e) {
-      std::string msg = e.what();
-      for (char& c : msg)
+      r.ok = false;
+      r.error = e.what();
+      for (char& c : r.error)
         if (c == '\n') c = ' ';
-      out << "ok 0\nerror " << msg << "\n";
     }
-    const std::string s = out.str();
+    const std::string s = row_to_json(r).dump();
     ssize_t w = write(fd[1], s.data(), s.size());
     (void)w;
     close(fd[1]);
@@ -84,39 +126,8 @@ Row run_isolated(const std::string& input, const std::string& method,
   struct rusage ru {};
   wait4(pid, &status, 0, &ru);
   row.peak_mb = ru.ru_maxrss / 1024.0;
-  std::istringstream in(data);
-  std::string key;
-  while (in >> key) {
-    if (key == "error") {
-      std::getline(in, row.error);
-      continue;
-    }
-    double v;
-    in >> v;
-    if (key == "ok")
-      row.ok = v != 0;
-    else if (key == "in")
-      row.nb_tets_in = static_cast<long>(v);
-    else if (key == "out")
-      row.nb_tets_out = static_cast<long>(v);
-    else if (key == "sec")
-      row.seconds = v;
-    else if (key == "it")
-      row.iterations = static_cast<int>(v);
-    else if (key == "avg")
-      row.q_avg = v;
-    else if (key == "min")
-      row.q_min = v;
-    else if (key == "dih")
-      row.min_dihedral = v;
-    else if (key == "bad")
-      row.bad_pct = v;
-    else if (key == "spi")
-      row.s_per_it = v;
-    else if (key == "energy")
-      row.energy.push_back(v);
-  }
-  if (!WIFEXITED(status) && row.error.empty()) row.error = "crashed";
+  if (!WIFEXITED(status)) row.error = "crashed";
+  row_from_json(data, row);
   return row;
 }
 
