@@ -15,32 +15,17 @@
 #include <thread>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
+#include "core/io/atomic_file.h"
 #include "core/io/gmsh_gui.h"
 #include "core/io/gmsh_inprocess.h"
+#include "core/util/error.h"
 #include "plugin/panel.h"
 
 namespace {
 
 using namespace cvtmesh;
-
-const char* const kUsage =
-    "usage: cvtmesh-gui [options] [MODEL] [-- GMSH-OPTIONS...]\n"
-    "Opens MODEL (.geo, .msh, or anything Gmsh opens) in the Gmsh GUI with a\n"
-    "'Mesh optimization (CVT)' group in the ONELAB tree; its Run button optimizes the mesh.\n"
-    "options:\n"
-    "  --method M            initial method (see the panel; e.g. cvdt+swap, combined)\n"
-    "  --max-iterations N    initial max iterations\n"
-    "  --tolerance T         initial tolerance\n"
-    "  --sizing S            initial sizing: mesh or uniform\n"
-    "  --no-quality-views    do not add quality views after a run\n"
-    "  --show-quality        show the quality of the model's mesh on start (meshing it if needed)\n"
-    "  --run-on-start        press Run once the window is up\n"
-    "  --result-json FILE    after each action, write its outcome to FILE (JSON: {\"action\":\n"
-    "                        \"optimize\"|\"quality\", \"result\"|\"error\": ...})\n"
-    "  --exit-after-run [S]  close the window S seconds (default 0) after the first run;\n"
-    "                        the exit status is 0 if the run succeeded, 1 if not\n"
-    "  -h, --help            this help\n"
-    "GMSH-OPTIONS after -- go to Gmsh (e.g. -- -setnumber h 0.1).\n";
 
 const std::string kRun = "cvtmesh-run";
 const std::string kStop = "cvtmesh-stop";
@@ -57,69 +42,59 @@ struct Args {
   std::vector<std::string> gmsh_args;
 };
 
-// Returns false (after printing why) on a bad command line.
-bool parse(int argc, char** argv, Args& a, bool& help) {
+// The command line: options through CLI11; what follows the first "--" goes to Gmsh unread.
+// Returns the exit status to stop with (help printed: 0, bad command line: 2), or -1 to go on.
+int parse(int argc, char** argv, Args& a) {
   a.gmsh_args.push_back(argv[0]);
-  for (int i = 1; i < argc; ++i) {
-    const std::string s = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc) {
-        std::cerr << "cvtmesh-gui: " << s << " needs a value\n";
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
-    std::string v;
-    try {
-      if (s == "--") {
-        for (++i; i < argc; ++i) a.gmsh_args.push_back(argv[i]);
-      } else if (s == "-h" || s == "--help") {
-        help = true;
-      } else if (s == "--method") {
-        if (!value(a.preset.method)) return false;
-      } else if (s == "--max-iterations") {
-        if (!value(v)) return false;
-        a.preset.max_iterations = std::stoi(v);
-      } else if (s == "--tolerance") {
-        if (!value(v)) return false;
-        a.preset.tolerance = std::stod(v);
-      } else if (s == "--sizing") {
-        if (!value(a.preset.sizing)) return false;
-      } else if (s == "--no-quality-views") {
-        a.preset.quality_views = 0;
-      } else if (s == "--show-quality") {
-        a.show_quality = true;
-      } else if (s == "--run-on-start") {
-        a.run_on_start = true;
-      } else if (s == "--result-json") {
-        if (!value(a.result_json)) return false;
-      } else if (s == "--exit-after-run") {
-        a.exit_after_run = 0;
-        if (i + 1 < argc && argv[i + 1][0] != '-') {
-          char* end = nullptr;
-          const double t = std::strtod(argv[i + 1], &end);
-          if (end && *end == '\0') {
-            a.exit_after_run = t;
-            ++i;
-          }
-        }
-      } else if (!s.empty() && s[0] == '-') {
-        std::cerr << "cvtmesh-gui: unknown option " << s << " (Gmsh options go after --)\n";
-        return false;
-      } else if (a.model.empty()) {
-        a.model = s;
-      } else {
-        std::cerr << "cvtmesh-gui: one model at a time (got '" << a.model << "' and '" << s
-                  << "')\n";
-        return false;
-      }
-    } catch (const std::exception&) {
-      std::cerr << "cvtmesh-gui: bad value '" << v << "' for " << s << "\n";
-      return false;
+  int ours = argc;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--") {
+      ours = i;
+      a.gmsh_args.insert(a.gmsh_args.end(), argv + i + 1, argv + argc);
+      break;
     }
+  CLI::App app(
+      "Opens MODEL (.geo, .msh, or anything Gmsh opens) in the Gmsh GUI with a\n"
+      "'Mesh optimization (CVT)' group in the ONELAB tree; its Run button optimizes the mesh.",
+      "cvtmesh-gui");
+  app.footer(
+      "GMSH-OPTIONS after -- go to Gmsh: cvtmesh-gui [OPTIONS] [MODEL] -- GMSH-OPTIONS...\n"
+      "(e.g. -- -setnumber h 0.1).");
+  app.add_option("model", a.model, "the model to open");
+  app.add_option("--method", a.preset.method,
+                 "initial method (see the panel; e.g. cvdt+swap, combined)");
+  app.add_option("--max-iterations", a.preset.max_iterations, "initial max iterations");
+  app.add_option("--tolerance", a.preset.tolerance, "initial tolerance");
+  app.add_option("--sizing", a.preset.sizing, "initial sizing: mesh or uniform");
+  app.add_flag_callback(
+      "--no-quality-views", [&a] { a.preset.quality_views = 0; },
+      "do not add quality views after a run");
+  app.add_flag("--show-quality", a.show_quality,
+               "show the quality of the model's mesh on start (meshing it if needed)");
+  app.add_flag("--run-on-start", a.run_on_start, "press Run once the window is up");
+  app.add_option("--result-json", a.result_json,
+                 "after each action, write its outcome to FILE (JSON: {\"action\": "
+                 "\"optimize\"|\"quality\", \"result\"|\"error\": ...})")
+      ->option_text("FILE");
+  double exit_after = 0;
+  CLI::Option* exit_opt =
+      app.add_option("--exit-after-run", exit_after,
+                     "close the window S seconds (default 0) after the first run; the exit "
+                     "status is 0 if the run succeeded, 1 if not (a value after it is S: give "
+                     "MODEL before)")
+          ->expected(0, 1)
+          ->option_text("[S]");
+  try {
+    app.parse(ours, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "cvtmesh-gui: " << e.what() << " (Gmsh options go after --; see --help)\n";
+    return 2;
   }
-  return true;
+  if (exit_opt->count() > 0) a.exit_after_run = exit_after;
+  return -1;
 }
 
 // The optimization running in its worker thread, and what it leaves behind.
@@ -287,17 +262,17 @@ class App {
     j["action"] = action;
     j[key] = value;
     // Written whole under a temporary name, then renamed: a watcher never sees half a file.
-    const std::string tmp = args_.result_json + ".tmp";
-    {
-      std::ofstream f(tmp);
-      f << j.dump(2) << "\n";
-      if (!f) {
-        tree_.error("cvtmesh: cannot write " + tmp);
-        return;
+    try {
+      AtomicFile f(args_.result_json);
+      {
+        std::ofstream out(f.temp_path());
+        out << j.dump(2) << "\n";
+        if (!out) throw OutputError("cannot write '" + f.temp_path() + "'");
       }
+      f.commit();
+    } catch (const std::exception& e) {
+      tree_.error(std::string("cvtmesh: ") + e.what());
     }
-    if (std::rename(tmp.c_str(), args_.result_json.c_str()) != 0)
-      tree_.error("cvtmesh: cannot write " + args_.result_json);
   }
 
   double elapsed() const {
@@ -319,15 +294,7 @@ class App {
 
 int main(int argc, char** argv) {
   Args args;
-  bool help = false;
-  if (!parse(argc, argv, args, help)) {
-    std::cerr << kUsage;
-    return 2;
-  }
-  if (help) {
-    std::cout << kUsage;
-    return 0;
-  }
+  if (const int stop = parse(argc, argv, args); stop >= 0) return stop;
   try {
     gui_initialize(args.gmsh_args);
   } catch (const std::exception& e) {
