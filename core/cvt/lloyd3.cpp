@@ -5,6 +5,7 @@
 
 #include "core/cvt/lloyd3_anderson.h"
 #include "core/cvt/lloyd3_cells.h"
+#include "core/cvt/lloyd3_check.h"
 #include "core/cvt/lloyd3_lbfgs.h"
 #include "core/cvt/lloyd3_reinsert.h"
 #include "core/cvt/move_safeguard3.h"
@@ -23,7 +24,8 @@ double seconds_since(Clock::time_point t0) {
 
 // One Lloyd iteration = the cells of the current mesh (lloyd3_cells.h), the targets of the free
 // vertices (L-BFGS, lloyd3_lbfgs.h, or relaxed/Anderson Lloyd, lloyd3_anderson.h; both through
-// the move safeguard, move_safeguard3.h), the re-insertion and the check (lloyd3_reinsert.h).
+// the move safeguard, move_safeguard3.h), the re-insertion (lloyd3_reinsert.h) and the check
+// (lloyd3_check.h).
 class Lloyd3Problem {
  public:
   Lloyd3Problem(TetMesh& mesh, const Lloyd3Options& o)

@@ -24,11 +24,4 @@ Reinsertion reinsert_vertices3(TetMesh& mesh, const ConstrainedFaces& constraine
                                const std::vector<double>& target, bool local_flips,
                                double max_flip_leftover, Delaunay3& backend, LloydStep& s);
 
-// The mesh after an iteration: full -> check_mesh (orientation, adjacency, closed boundary,
-// constrained triangles present, interfaces); otherwise every live tet's orientation (exact
-// orient3d, in parallel: the moves and flips change connectivity only through apply_swap, whose
-// structure the full check verifies every few iterations and at the end). Then every interior
-// vertex still has tets. Throws InvariantError.
-void verify_lloyd3_mesh(const TetMesh& mesh, bool full);
-
 }  // namespace cvtmesh
