@@ -1,5 +1,7 @@
 #include "convert/cli_common.h"
 
+#include "core/quality/quality_fields.h"
+
 namespace cvtmesh::cli {
 
 std::vector<Command>& commands() {

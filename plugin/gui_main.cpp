@@ -18,9 +18,9 @@
 #include <CLI/CLI.hpp>
 
 #include "core/io/atomic_file.h"
-#include "core/io/gmsh_gui.h"
-#include "core/io/gmsh_inprocess.h"
 #include "core/util/error.h"
+#include "plugin/gmsh_gui.h"
+#include "plugin/gmsh_inprocess.h"
 #include "plugin/panel.h"
 
 namespace {
