@@ -48,6 +48,23 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
   c->add_option("--hop-amount", o.hop_amount,
                 "2D CVT: basin-hopping kick radius, in units of the local size h")
       ->check(CLI::Range(0.01, 1.0));
+  c->add_flag("--fix-boundary", o.fix_boundary,
+              "keep every boundary vertex fixed (the default method otherwise moves surface and "
+              "curve vertices on the input's geometry; the other methods always keep it fixed)");
+  c->add_option("--hausdorff", o.hausdorff,
+                "free boundary: bound on the Hausdorff distance between the new and the input "
+                "boundary, in model units (default: 2e-3 of the bounding-box diagonal)")
+      ->check(CLI::NonNegativeNumber);
+  c->add_option("--feature-angle", o.feature_angle,
+                "free boundary: edges where the surface turns by more than this many degrees are "
+                "sharp features (kept as curves)")
+      ->check(CLI::Range(0.0, 180.0));
+  c->add_option("--lock-physical", o.lock_physical,
+                "free boundary: keep the surfaces / curves of this physical group (by name) fixed; "
+                "repeatable");
+  c->add_option("--boundary-lloyd-rounds", o.boundary_lloyd_rounds,
+                "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = none)")
+      ->check(CLI::Range(0, 1000));
   c->add_option("--seed", o.seed, "random seed (methods that use randomness, --hops)");
 }
 
@@ -95,6 +112,14 @@ void register_optimize(CLI::App& app) {
          after.extra.push_back({"seconds", r.seconds});
          t.columns = {before, after};
          if (!*quiet) std::cerr << t.to_text();
+         if (!*quiet && r.boundary_free)
+           std::fprintf(stderr,
+                        "free boundary: %d vertices moved, Hausdorff %.3e (%.2e of the diagonal, "
+                        "bound %.3e), volume change %.4f %%, worst boundary triangle Q %.4f -> "
+                        "%.4f\n",
+                        r.nb_boundary_moved, r.hausdorff, r.hausdorff / r.diagonal,
+                        r.hausdorff_tolerance, 100 * r.volume_change, r.tri_q_min_before,
+                        r.tri_q_min_after);
          std::cerr << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
                    << " iterations, " << (r.converged ? "converged" : "not converged") << ")\n";
          return 0;

@@ -5,6 +5,10 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/boundary/boundary_lloyd.h"
+#include "core/boundary/discrete_boundary.h"
+#include "core/boundary/smooth_boundary_maxmin.h"
+#include "core/boundary/verify_free_boundary.h"
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/pipeline/combined_optimize.h"
@@ -103,8 +107,10 @@ void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
 // poor tets (smooth_maxmin3, unless !polish_maxmin) and flips improving the minimal dihedral
 // angle that may not lower the minimum Q either, iterated (the CombOpt operators with a Q guard
 // on the flips); then the repair of the slivers left (repair_slivers, unless !polish_repair).
-void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r,
+                      std::function<long(TetMesh&)> boundary_smoothing) {
   CombinedOptions co;
+  co.extra_smoothing = std::move(boundary_smoothing);
   co.max_iterations = o.max_iterations;
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
@@ -125,6 +131,10 @@ void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   }
 }
 
+void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  run_polish3_with(mesh, o, r, nullptr);
+}
+
 // CVDT + SWAP, then the polish (removes near-boundary slivers that flips alone cannot).
 void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   run_cvdt_swap3(mesh, o, r);
@@ -132,6 +142,68 @@ void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResu
   OptimizeResult polish;
   run_polish3(mesh, o, polish);
   r.iterations = lloyd_iterations;
+}
+
+// The boundary a free-boundary run may move: the discrete reference geometry of the input, with
+// the user's locked physical groups.
+BoundaryModel boundary_model(const TetMesh& mesh, const OptimizeOptions& o) {
+  BoundaryModelOptions bo;
+  bo.feature_angle = o.feature_angle;
+  for (const std::string& name : o.lock_physical) {
+    bool found = false;
+    for (const PhysicalGroup& g : mesh.model.groups)
+      if (g.name == name && (g.dim == 2 || g.dim == 1)) {
+        auto& to = g.dim == 2 ? bo.locked_surfaces : bo.locked_curves;
+        to.insert(to.end(), g.entities.begin(), g.entities.end());
+        found = true;
+      }
+    if (!found)
+      throw std::invalid_argument("lock_physical: no surface or curve physical group named '" +
+                                  name + "'");
+  }
+  return o.boundary_model ? o.boundary_model(mesh, bo) : make_discrete_boundary(mesh, bo);
+}
+
+double hausdorff_tolerance(const OptimizeOptions& o, const BoundaryModel& b) {
+  return o.hausdorff > 0 ? o.hausdorff : 2e-3 * b.diagonal;
+}
+
+// The default method with a free boundary: Lloyd (interior) as with a fixed boundary, then the
+// constrained CVT of the boundary and interior together (boundary_lloyd), Lloyd again to
+// re-converge the interior, SWAP, and the polish with the boundary max-min after its interior
+// max-min in each iteration, then a last boundary max-min after the sliver repair.
+void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryModel& b,
+                                OptimizeResult& r) {
+  const double tol = hausdorff_tolerance(o, b);
+  run_cvdt3(mesh, o, r);
+  const int lloyd_iterations = r.iterations;
+  const bool lloyd_converged = r.converged;
+  if (o.boundary_lloyd_rounds > 0) {
+    BoundaryLloydOptions bl;
+    bl.max_rounds = o.boundary_lloyd_rounds;
+    bl.hausdorff = tol;
+    const auto sizing = sizing3(mesh, o);
+    const BoundaryLloydStats st = boundary_lloyd(mesh, b, *sizing, bl);
+    report(o, "bnd-cvt", st.rounds, 0, st.energy.empty() ? 0 : st.energy.back(),
+           quality_stats(mesh, ""));
+    OptimizeOptions again = o;
+    again.max_iterations = std::min(o.max_iterations, 30);
+    OptimizeResult r2;
+    run_cvdt3(mesh, again, r2);
+    r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
+    r.seconds_lloyd += r2.seconds_lloyd;
+  }
+  run_swap3(mesh, o, r);
+  BoundaryMaxMinOptions bm;
+  bm.hausdorff = tol;
+  bm.passes = 1;
+  OptimizeResult polish;
+  run_polish3_with(mesh, o, polish,
+                   [&](TetMesh& m) { return smooth_boundary_maxmin(m, b, bm).nb_moved; });
+  bm.passes = 2;
+  smooth_boundary_maxmin(mesh, b, bm);
+  r.iterations = lloyd_iterations;
+  r.converged = lloyd_converged;
 }
 
 using Method3 = void (*)(TetMesh&, const OptimizeOptions&, OptimizeResult&);
@@ -194,8 +266,29 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
       throw std::invalid_argument("basin hopping (--hops) is a 2D option; this mesh is 3D");
     r.before = quality_stats(data.tet, "before");
     const TetMesh input = data.tet;
-    it->second(data.tet, o, r);
-    if (o.verify) verify_optimized(input, data.tet);
+    if (!o.fix_boundary && o.method == "cvdt+swap+smooth") {
+      const BoundaryModel b = boundary_model(data.tet, o);
+      run_cvdt_swap_smooth_free3(data.tet, o, b, r);
+      VerifyOptions vo;
+      vo.boundary_moves = true;
+      vo.volume_tolerance = o.volume_tolerance;
+      if (o.verify) verify_optimized(input, data.tet, vo);
+      FreeBoundaryTolerances ft;
+      ft.hausdorff = o.verify ? hausdorff_tolerance(o, b) : 0;
+      ft.volume = o.verify ? o.volume_tolerance : 1e300;
+      const FreeBoundaryReport fr = verify_free_boundary(input, data.tet, b, ft);
+      r.boundary_free = true;
+      r.nb_boundary_moved = fr.nb_moved;
+      r.hausdorff = fr.hausdorff.value();
+      r.hausdorff_tolerance = hausdorff_tolerance(o, b);
+      r.diagonal = fr.diagonal;
+      r.volume_change = fr.max_volume_change;
+      r.tri_q_min_before = fr.tri_q_min_before;
+      r.tri_q_min_after = fr.tri_q_min_after;
+    } else {
+      it->second(data.tet, o, r);
+      if (o.verify) verify_optimized(input, data.tet);
+    }
     r.after = quality_stats(data.tet, o.method);
     r.method = o.method;
   } else {

@@ -1,0 +1,75 @@
+#include "core/boundary/boundary_move.h"
+
+#include <cmath>
+
+#include "core/geometry/predicates.h"
+
+namespace cvtmesh {
+
+bool project_on_entity(const BoundaryModel& model, int v, const double* p, double* q) {
+  const VertexRole r = model.role_of(v);
+  if (r.role == BoundaryRole::kSurface) return model.geometry->closest_on_surface(r.entity, p, q);
+  if (r.role == BoundaryRole::kCurve) return model.geometry->closest_on_curve(r.entity, p, q);
+  return false;
+}
+
+PlannedBoundaryMove plan_boundary_move(const TetMesh& m, const BoundaryModel& model,
+                                       const VertexTets& star, const BoundaryFans& fans, int v,
+                                       const double* wanted, double hausdorff) {
+  PlannedBoundaryMove plan;
+  if (!model.movable(v)) return plan;
+  if (!project_on_entity(model, v, wanted, plan.position)) {
+    plan.status = BoundaryMoveStatus::kNoProjection;
+    return plan;
+  }
+  for (int d = 0; d < 3; ++d)
+    if (!std::isfinite(plan.position[d])) {
+      plan.status = BoundaryMoveStatus::kNoProjection;
+      return plan;
+    }
+  auto at = [&](int w) { return w == v ? static_cast<const double*>(plan.position) : m.point(w); };
+  for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
+    const int* w = &m.tets[4 * static_cast<std::size_t>(*t)];
+    if (orient3d(at(w[0]), at(w[1]), at(w[2]), at(w[3])) <= 0) {
+      plan.status = BoundaryMoveStatus::kInverted;
+      return plan;
+    }
+  }
+  if (std::isfinite(hausdorff) && !fan_within_tolerance(m, model, fans, v, plan.position, hausdorff)) {
+    plan.status = BoundaryMoveStatus::kTooFar;
+    return plan;
+  }
+  plan.status = BoundaryMoveStatus::kOk;
+  return plan;
+}
+
+bool fan_within_tolerance(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans,
+                          int v, const double* position, double hausdorff) {
+  // The triangles' centroids and the midpoints of their edges through v (the other edges do not
+  // move).
+  auto at = [&](int w) { return w == v ? position : m.point(w); };
+  for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f) {
+    const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];
+    const double *a = at(w[0]), *b = at(w[1]), *c = at(w[2]);
+    double p[3][3];
+    int n = 0;
+    for (int d = 0; d < 3; ++d) p[0][d] = (a[d] + b[d] + c[d]) / 3;
+    n = 1;
+    for (int k = 0; k < 3; ++k)
+      if (w[k] != v) {
+        const double* x = at(w[k]);
+        for (int d = 0; d < 3; ++d) p[n][d] = 0.5 * (x[d] + position[d]);
+        ++n;
+      }
+    for (int i = 0; i < n; ++i)
+      if (model.geometry->distance_to_boundary(p[i]) > hausdorff) return false;
+  }
+  return true;
+}
+
+void apply_boundary_move(TetMesh& m, int v, const PlannedBoundaryMove& move) {
+  double* p = m.point(v);
+  for (int d = 0; d < 3; ++d) p[d] = move.position[d];
+}
+
+}  // namespace cvtmesh
