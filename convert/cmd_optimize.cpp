@@ -59,9 +59,15 @@ void add_method_options(CLI::App* c, OptimizeOptions& o) {
                 "free boundary: edges where the surface turns by more than this many degrees are "
                 "sharp features (kept as curves)")
       ->check(CLI::Range(0.0, 180.0));
+  c->add_flag("--free-smooth-curves", o.free_smooth_curves,
+              "free boundary: Gmsh curves and points where the surface is smooth (no turn above "
+              "the feature angle) are not kept as curves; their vertices move on the surface");
   c->add_option("--lock-physical", o.lock_physical,
                 "free boundary: keep the surfaces / curves of this physical group (by name) fixed; "
                 "repeatable");
+  c->add_option("--volume-tolerance", o.volume_tolerance,
+                "free boundary: bound on each region's relative volume change (default 5e-3)")
+      ->check(CLI::NonNegativeNumber);
   c->add_option("--boundary-lloyd-rounds", o.boundary_lloyd_rounds,
                 "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = none)")
       ->check(CLI::Range(0, 1000));
@@ -114,9 +120,11 @@ void register_optimize(CLI::App& app) {
          if (!*quiet) std::cerr << t.to_text();
          if (!*quiet && r.boundary_free)
            std::fprintf(stderr,
-                        "free boundary: %d vertices moved, Hausdorff %.3e (%.2e of the diagonal, "
+                        "free boundary: %d surface, %d curve, %d fixed vertices; "
+                        "%d vertices moved, Hausdorff %.3e (%.2e of the diagonal, "
                         "bound %.3e), volume change %.4f %%, worst boundary triangle Q %.4f -> "
                         "%.4f\n",
+                        r.nb_surface_vertices, r.nb_curve_vertices, r.nb_fixed_vertices,
                         r.nb_boundary_moved, r.hausdorff, r.hausdorff / r.diagonal,
                         r.hausdorff_tolerance, 100 * r.volume_change, r.tri_q_min_before,
                         r.tri_q_min_after);

@@ -1,6 +1,8 @@
 #include "core/boundary/boundary_lloyd.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 
 #include "core/boundary/boundary_fans.h"
@@ -8,6 +10,8 @@
 #include "core/cvt/lloyd3.h"
 #include "core/delaunay/restore_delaunay3.h"
 #include "core/geometry/predicates.h"
+#include "core/geometry/vec3.h"
+#include "core/quality/quality.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/vertex_tets.h"
 #include "core/swap/constrained_faces.h"
@@ -26,6 +30,22 @@ bool move_interior(TetMesh& m, const VertexTets& star, int v, const double* p) {
   return true;
 }
 
+// The minimum Q of v's star tets and of its fan triangles.
+std::pair<double, double> star_minima(const TetMesh& m, const VertexTets& star,
+                                      const BoundaryFans& fans, int v) {
+  double q = 1, t = 1;
+  for (const int* s = star.begin_of(v); s != star.end_of(v); ++s) {
+    const int* w = &m.tets[4 * static_cast<std::size_t>(*s)];
+    q = std::min(q, tet_quality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]),
+                                Measure::kQ));
+  }
+  for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f) {
+    const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];
+    t = std::min(t, tri_quality(m.point(w[0]), m.point(w[1]), m.point(w[2]), 3, Measure::kQ));
+  }
+  return {q, t};
+}
+
 }  // namespace
 
 BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
@@ -42,6 +62,8 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
   int halvings = 0;
   for (int round = 0; round < o.max_rounds;) {
     const TetMesh backup = mesh;
+    const VolumeBudget budget_backup = o.volume_budget ? *o.volume_budget : VolumeBudget{};
+    std::vector<double> delta;
     const VertexTets star = vertex_tets(mesh);
     const BoundaryFans fans = boundary_fans(mesh);
     long moved = 0, refused = 0, nb_boundary = 0;
@@ -59,10 +81,24 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
           ++refused;
           continue;
         }
-        double d2 = 0;
-        for (int d = 0; d < 3; ++d) d2 += (plan.position[d] - z[d]) * (plan.position[d] - z[d]);
-        sum_move2 += d2;
+        if (o.volume_budget && !o.volume_budget->admits(mesh, star, v, plan.position, delta)) {
+          ++refused;
+          continue;
+        }
+        const auto before = star_minima(mesh, star, fans, v);
+        const Vec3 old = vec3(z);
         apply_boundary_move(mesh, v, plan);
+        const auto after = star_minima(mesh, star, fans, v);
+        if (after.first < std::min(before.first, o.q_guard) ||
+            after.second < std::min(before.second, o.tri_guard)) {
+          for (int d = 0; d < 3; ++d) mesh.point(v)[d] = old[d];
+          ++refused;
+          continue;
+        }
+        if (o.volume_budget) o.volume_budget->commit(delta);
+        double d2 = 0;
+        for (int d = 0; d < 3; ++d) d2 += (plan.position[d] - old[d]) * (plan.position[d] - old[d]);
+        sum_move2 += d2;
         ++moved;
       } else if (o.move_interior && v < static_cast<int>(mesh.vclass.size()) &&
                  mesh.vclass[v].dim == 3) {
@@ -75,6 +111,7 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
     CellCentroids next = voronoi_centroids_3d(mesh, sizing, &hints);
     if (next.energy > cc.energy) {
       mesh = backup;
+      if (o.volume_budget) *o.volume_budget = budget_backup;
       ++stats.nb_undone;
       if (++halvings > o.max_halvings) break;
       omega *= 0.5;

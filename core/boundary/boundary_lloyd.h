@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/boundary/boundary_geometry.h"
+#include "core/boundary/volume_budget.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/mesh/tet_mesh.h"
 
@@ -27,6 +28,14 @@ struct BoundaryLloydOptions {
   double hausdorff = std::numeric_limits<double>::infinity();  // absolute
   bool move_interior = true;
   int max_halvings = 2;  // of omega, when a round raised the energy
+  // Shape guards on a boundary move: no tet of its star may fall below min(the star's minimum Q
+  // before the move, q_guard), no triangle of its fan below min(the fan's minimum Q, tri_guard)
+  // (the Lloyd step does not care about shapes, but the flips cannot repair a tet or triangle
+  // flattened against the boundary, and TetGen's rebuild fails on near-degenerate facets).
+  double q_guard = 0.1;
+  double tri_guard = 0.3;
+  // If set, boundary moves are admitted only within this budget (and charged to it).
+  VolumeBudget* volume_budget = nullptr;
 };
 
 struct BoundaryLloydStats {

@@ -117,7 +117,7 @@ BoundaryModel make_discrete_boundary(const TetMesh& m, const BoundaryModelOption
     while (j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1]) ++j;
     if (j - i == 2) {
       const int f = edges[i][2], g = edges[i + 1][2], a = edges[i][0], b = edges[i][1];
-      if (m.tri_surface[f] == m.tri_surface[g]) {
+      if (m.tri_surface[f] == m.tri_surface[g] || o.free_smooth_curves) {
         Vec3 nf_ = tri_normal(m.xyz, m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]);
         Vec3 ng = tri_normal(m.xyz, m.tris[3 * g], m.tris[3 * g + 1], m.tris[3 * g + 2]);
         // Consistently oriented neighbours run along their common edge in opposite directions.
@@ -173,7 +173,7 @@ BoundaryModel make_discrete_boundary(const TetMesh& m, const BoundaryModelOption
   out.role.assign(static_cast<std::size_t>(nv), VertexRole{});
   auto curve_vertex = [&](int v) {
     const VertexClass c = m.vclass[v];
-    if (locked[v] || c.dim == 0 || feature_degree[v] != 2) return false;
+    if (locked[v] || (c.dim == 0 && !o.free_smooth_curves) || feature_degree[v] != 2) return false;
     if (c.dim == 1 && std::find(o.locked_curves.begin(), o.locked_curves.end(), c.entity) !=
                           o.locked_curves.end())
       return false;
@@ -210,9 +210,9 @@ BoundaryModel make_discrete_boundary(const TetMesh& m, const BoundaryModelOption
       continue;
     }
     const VertexClass c = m.vclass[v];
-    if (locked[v] || c.dim == 0 || c.dim == 3) {
+    if (locked[v] || (c.dim == 0 && !o.free_smooth_curves) || c.dim == 3) {
       r.role = BoundaryRole::kFixed;
-    } else if (feature_degree[v] == 0 && !multi_patch[v] && c.dim == 2) {
+    } else if (feature_degree[v] == 0 && !multi_patch[v] && (c.dim == 2 || o.free_smooth_curves)) {
       r = {BoundaryRole::kSurface, vpatch[v]};
     } else if (curve_vertex(v)) {
       r = {BoundaryRole::kCurve, vchain[v]};

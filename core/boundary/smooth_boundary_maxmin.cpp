@@ -143,6 +143,7 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
         return true;
       };
       const double start_obj = cur;
+      std::vector<double> delta;
       bool moved = false;
       for (int step = 0; step < o.max_steps; ++step) {
         // Values and finite-difference gradients of every function.
@@ -162,6 +163,30 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
           }
           P[c] = x0;
         }
+        // The entity's tangent space at v: the gradients are projected on it, so that the
+        // common ascent direction of the active functions is one along the entity.
+        const VertexRole role = model.role_of(v);
+        Vec3 axis{0, 0, 0};
+        if (role.role == BoundaryRole::kSurface) {
+          axis = fan_normal(mesh, fans, v);
+        } else {
+          double best = 0;
+          for (int k = 0; k < 3; ++k) {
+            double probe[3] = {P[0], P[1], P[2]}, q[3];
+            probe[k] += 0.1 * lmin;
+            if (!project_on_entity(model, v, probe, q)) continue;
+            const Vec3 t = sub(q, P);
+            if (norm(t) > best) {
+              best = norm(t);
+              axis = (1 / best) * t;
+            }
+          }
+          if (!(best > 1e-9 * lmin)) break;
+        }
+        auto tangential = [&](const Vec3& g) {
+          return role.role == BoundaryRole::kSurface ? g - dot(g, axis) * axis : dot(g, axis) * axis;
+        };
+        for (Vec3& g : fg) g = tangential(g);
         cand.clear();
         double fmin = kInf;
         for (int i = 0; i < n; ++i)
@@ -182,24 +207,7 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
         if (order.size() > 8) order.resize(8);
         active.clear();
         for (const auto& a : order) active.push_back(cand[a.second].second);
-        Vec3 d = min_norm_in_hull(active);
-        // Within the entity's tangent plane (surface) or along its tangent (curve).
-        const VertexRole role = model.role_of(v);
-        if (role.role == BoundaryRole::kSurface) {
-          const Vec3 nrm = fan_normal(mesh, fans, v);
-          d = d - dot(d, nrm) * nrm;
-        } else {
-          const double l = norm(d);
-          if (!(l > 0)) break;
-          double probe[3], q[3];
-          for (int c = 0; c < 3; ++c) probe[c] = P[c] + 0.1 * lmin * d[c] / l;
-          if (!project_on_entity(model, v, probe, q)) break;
-          Vec3 t = sub(q, P);
-          const double lt = norm(t);
-          if (!(lt > 1e-9 * lmin)) break;
-          t = (1 / lt) * t;
-          d = dot(d, t) * t;
-        }
+        const Vec3 d = min_norm_in_hull(active);
         const double slope = norm2(d);
         if (!(slope > 0)) break;
         double alpha = 0.2 * lmin / std::sqrt(slope);
@@ -216,7 +224,15 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
           // The Hausdorff check last: it is the costly one.
           const PlannedBoundaryMove plan = plan_boundary_move(
               mesh, model, star, fans, v, wanted, std::numeric_limits<double>::infinity());
-          if (plan.status == BoundaryMoveStatus::kOk) {
+          // The volume change is measured from the vertex's start of this pass (the budget is
+          // charged once, for the whole move).
+          bool in_budget = true;
+          if (plan.status == BoundaryMoveStatus::kOk && o.volume_budget) {
+            for (int c = 0; c < 3; ++c) P[c] = start[c];
+            in_budget = o.volume_budget->admits(mesh, star, v, plan.position, delta);
+            for (int c = 0; c < 3; ++c) P[c] = here[c];
+          }
+          if (plan.status == BoundaryMoveStatus::kOk && in_budget) {
             apply_boundary_move(mesh, v, plan);
             double obj;
             if (evaluate(obj) && obj > cur &&
@@ -236,6 +252,13 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
         moved = true;
       }
       if (moved && cur < start_obj + o.min_gain) moved = false;
+      if (moved && o.volume_budget) {
+        const Vec3 now = vec3(P);
+        for (int c = 0; c < 3; ++c) P[c] = start[c];
+        o.volume_budget->admits(mesh, star, v, now.data(), delta);
+        o.volume_budget->commit(delta);
+        for (int c = 0; c < 3; ++c) P[c] = now[c];
+      }
       if (moved) {
         ++stats.nb_moved;
         ++moved_this_pass;

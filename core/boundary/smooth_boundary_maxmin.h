@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "core/boundary/boundary_geometry.h"
+#include "core/boundary/volume_budget.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace cvtmesh {
@@ -28,6 +29,7 @@ struct BoundaryMaxMinOptions {
   int max_steps = 20;
   int max_halvings = 10;
   double hausdorff = std::numeric_limits<double>::infinity();  // absolute
+  VolumeBudget* volume_budget = nullptr;  // if set, moves stay within it (and are charged to it)
 };
 
 struct BoundaryMaxMinStats {

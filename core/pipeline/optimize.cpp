@@ -149,6 +149,7 @@ void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResu
 BoundaryModel boundary_model(const TetMesh& mesh, const OptimizeOptions& o) {
   BoundaryModelOptions bo;
   bo.feature_angle = o.feature_angle;
+  bo.free_smooth_curves = o.free_smooth_curves;
   for (const std::string& name : o.lock_physical) {
     bool found = false;
     for (const PhysicalGroup& g : mesh.model.groups)
@@ -175,6 +176,9 @@ double hausdorff_tolerance(const OptimizeOptions& o, const BoundaryModel& b) {
 void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryModel& b,
                                 OptimizeResult& r) {
   const double tol = hausdorff_tolerance(o, b);
+  // The volume bound holds by construction: every boundary move is charged to one budget (a
+  // margin below the bound checked at the end, for rounding).
+  VolumeBudget budget = VolumeBudget::of(mesh, 0.9 * o.volume_tolerance);
   run_cvdt3(mesh, o, r);
   const int lloyd_iterations = r.iterations;
   const bool lloyd_converged = r.converged;
@@ -182,8 +186,11 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
     BoundaryLloydOptions bl;
     bl.max_rounds = o.boundary_lloyd_rounds;
     bl.hausdorff = tol;
+    bl.volume_budget = &budget;
     const auto sizing = sizing3(mesh, o);
     const BoundaryLloydStats st = boundary_lloyd(mesh, b, *sizing, bl);
+    for (std::size_t i = 0; i + 1 < st.energy.size(); ++i)
+      report(o, "bnd-cvt", static_cast<int>(i), 0, st.energy[i], QualityStats{});
     report(o, "bnd-cvt", st.rounds, 0, st.energy.empty() ? 0 : st.energy.back(),
            quality_stats(mesh, ""));
     OptimizeOptions again = o;
@@ -197,6 +204,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
   BoundaryMaxMinOptions bm;
   bm.hausdorff = tol;
   bm.passes = 1;
+  bm.volume_budget = &budget;
   OptimizeResult polish;
   run_polish3_with(mesh, o, polish,
                    [&](TetMesh& m) { return smooth_boundary_maxmin(m, b, bm).nb_moved; });
@@ -279,6 +287,9 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
       const FreeBoundaryReport fr = verify_free_boundary(input, data.tet, b, ft);
       r.boundary_free = true;
       r.nb_boundary_moved = fr.nb_moved;
+      r.nb_surface_vertices = b.nb_surface_vertices;
+      r.nb_curve_vertices = b.nb_curve_vertices;
+      r.nb_fixed_vertices = b.nb_fixed_vertices;
       r.hausdorff = fr.hausdorff.value();
       r.hausdorff_tolerance = hausdorff_tolerance(o, b);
       r.diagonal = fr.diagonal;

@@ -80,6 +80,9 @@ struct OptimizeOptions {
   double hausdorff = 0;
   // Sharp features of a discrete boundary: a turn above this many degrees across an edge.
   double feature_angle = 40;
+  // Free boundary, discrete geometry: Gmsh curves and points across which the surface is smooth
+  // (below feature_angle) are not kept (BoundaryModelOptions::free_smooth_curves).
+  bool free_smooth_curves = false;
   // Physical groups (by name) whose surfaces / curves stay fixed.
   std::vector<std::string> lock_physical;
   // Relative bound on each region's volume change with a free boundary (checked at the end).
@@ -107,6 +110,8 @@ struct OptimizeResult {
   // Free boundary (empty when the boundary was fixed): measured at the end of the run.
   bool boundary_free = false;
   int nb_boundary_moved = 0;         // boundary vertices that moved
+  // Roles of the boundary vertices: on a surface patch, on a curve, fixed (corners, locked).
+  int nb_surface_vertices = 0, nb_curve_vertices = 0, nb_fixed_vertices = 0;
   double hausdorff = 0;              // two-sided Hausdorff distance new vs input boundary
   double hausdorff_tolerance = 0;    // the bound it was held to
   double diagonal = 0;               // the input's bounding-box diagonal
