@@ -7,6 +7,7 @@
 
 #include "core/boundary/boundary_lloyd.h"
 #include "core/boundary/discrete_boundary.h"
+#include "core/boundary/flip_boundary_edges.h"
 #include "core/boundary/smooth_boundary_maxmin.h"
 #include "core/boundary/verify_free_boundary.h"
 #include "core/cvt/lloyd3.h"
@@ -178,10 +179,16 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
   const double tol = hausdorff_tolerance(o, b);
   // The volume bound holds by construction: every boundary move is charged to one budget (a
   // margin below the bound checked at the end, for rounding).
-  VolumeBudget budget = VolumeBudget::of(mesh, 0.9 * o.volume_tolerance);
+  // The constrained CVT may spend half of it (it moves every boundary vertex, and on a curved
+  // discrete surface every tangential move cuts a chord), the flips and max-min the rest.
+  VolumeBudget budget = VolumeBudget::of(mesh, 0.45 * o.volume_tolerance);
+  BoundaryFlipOptions bf;
+  bf.hausdorff = tol;
+  bf.volume_budget = &budget;
   run_cvdt3(mesh, o, r);
   const int lloyd_iterations = r.iterations;
   const bool lloyd_converged = r.converged;
+  flip_boundary_edges(mesh, b, bf);
   if (o.boundary_lloyd_rounds > 0) {
     BoundaryLloydOptions bl;
     bl.max_rounds = o.boundary_lloyd_rounds;
@@ -200,6 +207,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
     r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
     r.seconds_lloyd += r2.seconds_lloyd;
   }
+  budget.tolerance = 0.9 * o.volume_tolerance;
   run_swap3(mesh, o, r);
   BoundaryMaxMinOptions bm;
   bm.hausdorff = tol;
@@ -207,9 +215,13 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
   bm.volume_budget = &budget;
   OptimizeResult polish;
   run_polish3_with(mesh, o, polish,
-                   [&](TetMesh& m) { return smooth_boundary_maxmin(m, b, bm).nb_moved; });
+                   [&](TetMesh& m) {
+                     const long moved = smooth_boundary_maxmin(m, b, bm).nb_moved;
+                     return moved + flip_boundary_edges(m, b, bf).nb_flipped;
+                   });
   bm.passes = 2;
   smooth_boundary_maxmin(mesh, b, bm);
+  flip_boundary_edges(mesh, b, bf);
   r.iterations = lloyd_iterations;
   r.converged = lloyd_converged;
 }

@@ -19,8 +19,10 @@ namespace cvtmesh {
 void verify_optimized(const TetMesh& before, const TetMesh& after);
 
 // The same with a boundary that may move (the free-boundary optimization): boundary vertices are
-// not required to stay put (core/boundary/verify_free_boundary.h checks where they went) and each
-// region's volume may change by up to `volume_tolerance` relative.
+// not required to stay put (core/boundary/verify_free_boundary.h checks where they went), each
+// region's volume may change by up to `volume_tolerance` relative, and surface edge flips may
+// change the triangles: each surface keeps its number of triangles and its vertices, each volume
+// group is bounded by as many triangles of each surface as before.
 struct VerifyOptions {
   bool boundary_moves = false;
   double volume_tolerance = 1e-12;
