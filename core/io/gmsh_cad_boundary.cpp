@@ -20,12 +20,12 @@ class GmshCadGeometry final : public BoundaryGeometry {
 
   bool closest(int dim, int tag, const double* p, double* q) const {
     try {
-      std::vector<double> c, par, x;
+      // The projection's own point (in Gmsh 4.8.4 the parametric coordinates it returns for an
+      // OpenCASCADE surface are not reliable: getValue at them can give another point).
+      std::vector<double> c, par;
       gmsh::model::getClosestPoint(dim, tag, {p[0], p[1], p[2]}, c, par);
       if (c.size() < 3) return false;
-      gmsh::model::getValue(dim, tag, par, x);
-      if (x.size() < 3) x = c;
-      for (int d = 0; d < 3; ++d) q[d] = x[d];
+      for (int d = 0; d < 3; ++d) q[d] = c[d];
       return true;
     } catch (...) {
       return false;
