@@ -47,6 +47,10 @@ struct BoundaryModel {
   std::shared_ptr<const BoundaryGeometry> geometry;
   std::vector<VertexRole> role;  // #V of the mesh it was built for; vertices beyond: interior
   double diagonal = 0;           // bounding-box diagonal of the input mesh
+  // #V by 3: the input positions (the reference boundary's own vertices for the boundary ones);
+  // a vertex's new fan must pass within the Hausdorff tolerance of its input position (the
+  // reference -> new side of the Hausdorff distance, checked locally at every move).
+  std::vector<double> input_xyz;
   int nb_surface_vertices = 0, nb_curve_vertices = 0, nb_fixed_vertices = 0;
 
   VertexRole role_of(int v) const {

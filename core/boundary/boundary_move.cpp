@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
 
 namespace cvtmesh {
@@ -64,7 +65,27 @@ bool fan_within_tolerance(const TetMesh& m, const BoundaryModel& model, const Bo
     for (int i = 0; i < n; ++i)
       if (model.geometry->distance_to_boundary(p[i]) > hausdorff) return false;
   }
+  // The other side: the input position of every vertex of the fan stays within the tolerance of
+  // that vertex's own (new) fan.
+  if (model.input_xyz.size() < m.xyz.size()) return true;
+  for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = m.tris[3 * static_cast<std::size_t>(*f) + k];
+      if (!fan_covers_input(m, model, fans, u, v, position, hausdorff)) return false;
+    }
   return true;
+}
+
+bool fan_covers_input(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans,
+                      int u, int v, const double* position, double hausdorff) {
+  if (model.input_xyz.size() < 3 * static_cast<std::size_t>(u) + 3) return true;
+  const double* p0 = &model.input_xyz[3 * static_cast<std::size_t>(u)];
+  auto at = [&](int w) { return w == v ? position : m.point(w); };
+  for (const int* f = fans.begin_of(u); f != fans.end_of(u); ++f) {
+    const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];
+    if (point_triangle_distance(p0, at(w[0]), at(w[1]), at(w[2])) <= hausdorff) return true;
+  }
+  return fans.begin_of(u) == fans.end_of(u);
 }
 
 void apply_boundary_move(TetMesh& m, int v, const PlannedBoundaryMove& move) {

@@ -34,9 +34,15 @@ PlannedBoundaryMove plan_boundary_move(const TetMesh& mesh, const BoundaryModel&
                                        const double* wanted, double hausdorff);
 
 // Whether v's fan, with v at `position`, stays within `hausdorff` of the reference boundary: at
-// each triangle's centroid and the midpoints of its edges through v.
+// each triangle's centroid and the midpoints of its edges through v; and the other way, every
+// fan vertex's input position within `hausdorff` of its own fan (fan_covers_input).
 bool fan_within_tolerance(const TetMesh& mesh, const BoundaryModel& model, const BoundaryFans& fans,
                           int v, const double* position, double hausdorff);
+
+// Whether the input position of boundary vertex u is within `hausdorff` of u's fan, with v at
+// `position` (v may be u or a neighbour).
+bool fan_covers_input(const TetMesh& mesh, const BoundaryModel& model, const BoundaryFans& fans,
+                      int u, int v, const double* position, double hausdorff);
 
 void apply_boundary_move(TetMesh& mesh, int v, const PlannedBoundaryMove& move);
 

@@ -238,6 +238,7 @@ BoundaryModel make_discrete_boundary(const TetMesh& m, const BoundaryModelOption
   g->all = std::make_unique<TriangleSetDistance>(m.xyz, m.tris);
   out.geometry = g;
   out.diagonal = bounding_box_diagonal(m);
+  out.input_xyz = m.xyz;
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/boundary/boundary_fans.h"
 #include "core/boundary/boundary_move.h"
+#include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/geometry/vec3.h"
@@ -208,6 +209,27 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       if (!triangles_within(mesh, model, a, c, d, o.hausdorff) ||
           !triangles_within(mesh, model, b, c, d, o.hausdorff))
         continue;
+      // The other side of the Hausdorff bound: each of the four vertices' input position stays
+      // within the tolerance of its new fan.
+      if (std::isfinite(o.hausdorff) && model.input_xyz.size() >= mesh.xyz.size()) {
+        bool covered = true;
+        for (int x : {a, b, c, d}) {
+          const double* p0 = &model.input_xyz[3 * static_cast<std::size_t>(x)];
+          double dist = std::numeric_limits<double>::infinity();
+          for (const int* f = fans.begin_of(x); f != fans.end_of(x); ++f) {
+            if (*f == p.f1 || *f == p.f2) continue;
+            const int* w = &mesh.tris[3 * static_cast<std::size_t>(*f)];
+            dist = std::min(dist, point_triangle_distance(p0, mesh.point(w[0]), mesh.point(w[1]),
+                                                          mesh.point(w[2])));
+          }
+          for (int apex : {a, b})
+            if (x == apex || x == c || x == d)
+              dist = std::min(dist, point_triangle_distance(p0, mesh.point(apex), mesh.point(c),
+                                                            mesh.point(d)));
+          covered &= dist <= o.hausdorff;
+        }
+        if (!covered) continue;
+      }
       // Volume change: new minus old.
       double dv = 0;
       for (const auto& t : best_tets)

@@ -6,6 +6,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -96,6 +97,20 @@ bool SegmentSetDistance::closest(const double* p, double* q) const {
   q[1] = c.y();
   q[2] = c.z();
   return true;
+}
+
+double point_triangle_distance(const double* p, const double* a, const double* b, const double* c) {
+  const K::Triangle_3 t(K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2]),
+                        K::Point_3(c[0], c[1], c[2]));
+  const K::Point_3 q(p[0], p[1], p[2]);
+  if (t.is_degenerate()) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const double* x : {a, b, c})
+      best = std::min(best, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
+                                      (p[2] - x[2]) * (p[2] - x[2])));
+    return best;
+  }
+  return std::sqrt(CGAL::to_double(CGAL::squared_distance(q, t)));
 }
 
 }  // namespace cvtmesh

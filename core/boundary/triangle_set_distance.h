@@ -40,4 +40,7 @@ class SegmentSetDistance {
   std::unique_ptr<Impl> impl_;
 };
 
+// Distance from p to triangle (a, b, c) (each 3 doubles).
+double point_triangle_distance(const double* p, const double* a, const double* b, const double* c);
+
 }  // namespace cvtmesh

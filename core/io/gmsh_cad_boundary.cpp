@@ -139,6 +139,7 @@ BoundaryModel make_gmsh_cad_boundary(const TetMesh& m, const BoundaryModelOption
   }
   out.geometry = g;
   out.diagonal = bounding_box_diagonal(m);
+  out.input_xyz = m.xyz;
   return out;
 }
 
