@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/boundary/boundary_hausdorff.h"
 #include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
 
@@ -46,28 +47,18 @@ PlannedBoundaryMove plan_boundary_move(const TetMesh& m, const BoundaryModel& mo
 
 bool fan_within_tolerance(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans,
                           int v, const double* position, double hausdorff) {
-  // The triangles' centroids and the midpoints of their edges through v (the other edges do not
-  // move).
+  // The new side: the sample points of every fan triangle (centroid, edge midpoints, the points
+  // (2/3, 1/6, 1/6)), as the end-of-run check samples them.
   auto at = [&](int w) { return w == v ? position : m.point(w); };
   for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f) {
     const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];
-    const double *a = at(w[0]), *b = at(w[1]), *c = at(w[2]);
-    double p[3][3];
-    int n = 0;
-    for (int d = 0; d < 3; ++d) p[0][d] = (a[d] + b[d] + c[d]) / 3;
-    n = 1;
-    for (int k = 0; k < 3; ++k)
-      if (w[k] != v) {
-        const double* x = at(w[k]);
-        for (int d = 0; d < 3; ++d) p[n][d] = 0.5 * (x[d] + position[d]);
-        ++n;
-      }
-    for (int i = 0; i < n; ++i)
+    double p[10][3];
+    triangle_samples(at(w[0]), at(w[1]), at(w[2]), p);
+    for (int i = 3; i < 10; ++i)
       if (model.geometry->distance_to_boundary(p[i]) > hausdorff) return false;
   }
   // The other side: the input position of every vertex of the fan stays within the tolerance of
   // that vertex's own (new) fan.
-  if (model.input_xyz.size() < m.xyz.size()) return true;
   for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
     for (int k = 0; k < 3; ++k) {
       const int u = m.tris[3 * static_cast<std::size_t>(*f) + k];

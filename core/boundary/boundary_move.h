@@ -34,8 +34,9 @@ PlannedBoundaryMove plan_boundary_move(const TetMesh& mesh, const BoundaryModel&
                                        const double* wanted, double hausdorff);
 
 // Whether v's fan, with v at `position`, stays within `hausdorff` of the reference boundary: at
-// each triangle's centroid and the midpoints of its edges through v; and the other way, every
-// fan vertex's input position within `hausdorff` of its own fan (fan_covers_input).
+// each triangle's sample points (boundary_hausdorff.h: centroid, edge midpoints, (2/3,1/6,1/6));
+// and the other way, every fan vertex's input position within `hausdorff` of its own fan
+// (fan_covers_input).
 bool fan_within_tolerance(const TetMesh& mesh, const BoundaryModel& model, const BoundaryFans& fans,
                           int v, const double* position, double hausdorff);
 

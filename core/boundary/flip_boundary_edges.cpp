@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/boundary/boundary_fans.h"
+#include "core/boundary/boundary_hausdorff.h"
 #include "core/boundary/boundary_move.h"
 #include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
@@ -46,13 +47,10 @@ struct FlipPlan {
 bool triangles_within(const TetMesh& m, const BoundaryModel& model, int a, int c, int d,
                       double hausdorff) {
   if (!std::isfinite(hausdorff)) return true;
-  const double *p = m.point(a), *q = m.point(c), *r = m.point(d);
-  const double pts[4][3] = {{(p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3, (p[2] + q[2] + r[2]) / 3},
-                            {(q[0] + r[0]) / 2, (q[1] + r[1]) / 2, (q[2] + r[2]) / 2},
-                            {(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2},
-                            {(p[0] + r[0]) / 2, (p[1] + r[1]) / 2, (p[2] + r[2]) / 2}};
-  for (const auto& x : pts)
-    if (model.geometry->distance_to_boundary(x) > hausdorff) return false;
+  double pts[10][3];
+  triangle_samples(m.point(a), m.point(c), m.point(d), pts);
+  for (int i = 3; i < 10; ++i)
+    if (model.geometry->distance_to_boundary(pts[i]) > hausdorff) return false;
   return true;
 }
 
@@ -211,9 +209,10 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
         continue;
       // The other side of the Hausdorff bound: each of the four vertices' input position stays
       // within the tolerance of its new fan.
-      if (std::isfinite(o.hausdorff) && model.input_xyz.size() >= mesh.xyz.size()) {
+      if (std::isfinite(o.hausdorff)) {
         bool covered = true;
         for (int x : {a, b, c, d}) {
+          if (model.input_xyz.size() < 3 * static_cast<std::size_t>(x) + 3) continue;
           const double* p0 = &model.input_xyz[3 * static_cast<std::size_t>(x)];
           double dist = std::numeric_limits<double>::infinity();
           for (const int* f = fans.begin_of(x); f != fans.end_of(x); ++f) {

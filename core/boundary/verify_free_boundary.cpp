@@ -59,7 +59,9 @@ FreeBoundaryReport verify_free_boundary(const TetMesh& before, const TetMesh& af
   r.hausdorff = boundary_hausdorff(after, *model.geometry);
   if (tol.hausdorff > 0 && r.hausdorff.value() > tol.hausdorff)
     throw InvariantError("the boundary moved farther than the Hausdorff tolerance (" +
-                         str(r.hausdorff.value()) + " > " + str(tol.hausdorff) + ")");
+                         str(r.hausdorff.value()) + " > " + str(tol.hausdorff) +
+                         "; new to input " + str(r.hausdorff.to_reference) + ", input to new " +
+                         str(r.hausdorff.from_reference) + ")");
   const auto vb = region_volumes(before), va = region_volumes(after);
   for (std::size_t i = 0; i < vb.size() && i < va.size(); ++i) {
     const double rel = std::fabs(va[i].second - vb[i].second) / std::fabs(vb[i].second);
