@@ -224,7 +224,6 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
   bm.passes = 2;
   smooth_boundary_maxmin(mesh, b, bm);
   flip_boundary_edges(mesh, b, bf);
-
   r.iterations = lloyd_iterations;
   r.converged = lloyd_converged;
 }
