@@ -3,7 +3,7 @@
 // (2/3, 1/6, 1/6) (new -> reference), and the reference's own samples (reference -> new, against
 // the new triangles by a CGAL AABB tree).
 #pragma once
-#include "core/boundary/boundary_geometry.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace cvtmesh {

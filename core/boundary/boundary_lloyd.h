@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/boundary/boundary_geometry.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/boundary/volume_budget.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/mesh/tet_mesh.h"

@@ -8,7 +8,7 @@
 //  - apply_boundary_move writes the planned position.
 #pragma once
 #include "core/boundary/boundary_fans.h"
-#include "core/boundary/boundary_geometry.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/mesh/vertex_tets.h"
 

@@ -10,21 +10,11 @@
 #pragma once
 #include <vector>
 
-#include "core/boundary/boundary_geometry.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace cvtmesh {
 
-struct BoundaryModelOptions {
-  double feature_angle = 40;          // degrees: a sharper turn across an edge is a feature
-  std::vector<int> locked_surfaces;   // Gmsh surface tags whose vertices stay fixed
-  std::vector<int> locked_curves;     // Gmsh curve tags whose vertices stay fixed
-  // Gmsh's curves and points where the surface is smooth (no turn above feature_angle across
-  // them, e.g. the patch boundaries of a reparametrized STL) are not features: the patches on
-  // both sides are one, and their vertices move on it (their triangles keep their surface tags;
-  // the curve's line elements follow the vertices). false (default): every Gmsh curve is kept.
-  bool free_smooth_curves = false;
-};
 
 // Built from the input mesh (its boundary triangles, tri_surface and vclass). The geometry keeps
 // its own copy of what it needs. Throws std::invalid_argument for a negative feature angle.

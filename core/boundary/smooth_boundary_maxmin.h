@@ -12,7 +12,7 @@
 #pragma once
 #include <limits>
 
-#include "core/boundary/boundary_geometry.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/boundary/volume_budget.h"
 #include "core/mesh/tet_mesh.h"
 

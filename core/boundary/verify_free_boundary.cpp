@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/boundary/boundary_move.h"
-#include "core/pipeline/verify_mesh.h"
+#include "core/boundary/volume_budget.h"
 #include "core/quality/quality.h"
 #include "core/util/error.h"
 
@@ -62,7 +62,7 @@ FreeBoundaryReport verify_free_boundary(const TetMesh& before, const TetMesh& af
                          str(r.hausdorff.value()) + " > " + str(tol.hausdorff) +
                          "; new to input " + str(r.hausdorff.to_reference) + ", input to new " +
                          str(r.hausdorff.from_reference) + ")");
-  const auto vb = region_volumes(before), va = region_volumes(after);
+  const auto vb = region_volumes_of(before), va = region_volumes_of(after);
   for (std::size_t i = 0; i < vb.size() && i < va.size(); ++i) {
     const double rel = std::fabs(va[i].second - vb[i].second) / std::fabs(vb[i].second);
     r.max_volume_change = std::max(r.max_volume_change, rel);

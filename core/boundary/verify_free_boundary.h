@@ -7,7 +7,7 @@
 #pragma once
 #include <vector>
 
-#include "core/boundary/boundary_geometry.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/boundary/boundary_hausdorff.h"
 #include "core/mesh/tet_mesh.h"
 

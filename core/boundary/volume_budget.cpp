@@ -3,14 +3,30 @@
 #include <cmath>
 
 #include "core/geometry/tet_geometry.h"
-#include "core/pipeline/verify_mesh.h"
+#include <map>
 
 namespace cvtmesh {
+
+std::vector<std::pair<int, double>> region_volumes_of(const TetMesh& m) {
+  std::map<int, std::pair<double, double>> vol;  // Neumaier sum, compensation
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* v = &m.tets[4 * static_cast<std::size_t>(t)];
+    if (v[0] < 0) continue;
+    const double x = tet_volume(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+    auto& [sum, c] = vol[m.tet_region[t]];
+    const double s = sum + x;
+    c += std::fabs(sum) >= std::fabs(x) ? (sum - s) + x : (x - s) + sum;
+    sum = s;
+  }
+  std::vector<std::pair<int, double>> r;
+  for (const auto& [region, s] : vol) r.push_back({region, s.first + s.second});
+  return r;
+}
 
 VolumeBudget VolumeBudget::of(const TetMesh& mesh, double tolerance) {
   VolumeBudget b;
   b.tolerance = tolerance;
-  for (const auto& [r, v] : region_volumes(mesh)) {
+  for (const auto& [r, v] : region_volumes_of(mesh)) {
     b.region.push_back(r);
     b.volume.push_back(v);
     b.change.push_back(0);

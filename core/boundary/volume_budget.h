@@ -13,6 +13,9 @@
 
 namespace cvtmesh {
 
+// Each region's volume (sorted by region tag): a compensated sum of the live tets' volumes.
+std::vector<std::pair<int, double>> region_volumes_of(const TetMesh& mesh);
+
 struct VolumeBudget {
   std::vector<int> region;      // region tags
   std::vector<double> volume;   // their volumes at the start

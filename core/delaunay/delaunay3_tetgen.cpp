@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/delaunay/delaunay3.h"
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/util/error.h"

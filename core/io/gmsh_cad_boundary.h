@@ -4,8 +4,7 @@
 // this process (the in-process front ends: GUI panel, Python; `cvtmesh optimize` reads a .msh,
 // whose model has no CAD, and uses the discrete geometry). Every Gmsh call stays in core/io/.
 #pragma once
-#include "core/boundary/boundary_geometry.h"
-#include "core/boundary/discrete_boundary.h"
+#include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace cvtmesh {

@@ -13,6 +13,8 @@
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/pipeline/combined_optimize.h"
+#include "core/pipeline/methods3.h"
+#include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize2d.h"
 #include "core/pipeline/repair_slivers.h"
 #include "core/swap/swap_slivers.h"
@@ -53,6 +55,8 @@ void report(const OptimizeOptions& o, const std::string& phase, int it, double D
   o.progress(p);
 }
 
+}  // namespace
+
 // Lloyd to a CVDT (3D).
 void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   Lloyd3Options lo;
@@ -60,7 +64,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.lloyd.tolerance = o.tolerance;
   lo.relaxation = o.relaxation;
   lo.anderson_depth = o.anderson_depth;
-  lo.lbfgs_memory = o.lbfgs_memory < 0 ? 5 : o.lbfgs_memory;
+  lo.lbfgs_memory = o.lbfgs_memory;  // resolved: 5 for the default -1
   lo.sizing = sizing3(mesh, o);
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
@@ -145,6 +149,8 @@ void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResu
   r.iterations = lloyd_iterations;
 }
 
+namespace {
+
 // The boundary a free-boundary run may move: the discrete reference geometry of the input, with
 // the user's locked physical groups.
 BoundaryModel boundary_model(const TetMesh& mesh, const OptimizeOptions& o) {
@@ -228,19 +234,6 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
   r.converged = lloyd_converged;
 }
 
-using Method3 = void (*)(TetMesh&, const OptimizeOptions&, OptimizeResult&);
-const std::map<std::string, Method3>& methods3() {
-  static const std::map<std::string, Method3> m = {
-      {"cvdt", run_cvdt3},
-      {"cvdt+swap", run_cvdt_swap3},
-      {"cvdt+swap+smooth", run_cvdt_swap_smooth3},
-      {"swap", run_swap3},
-      {"combined", run_combined3},
-      {"smooth", run_polish3},
-  };
-  return m;
-}
-
 }  // namespace
 
 OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
@@ -265,65 +258,48 @@ OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
   return p;
 }
 
-std::vector<std::string> methods_for_dim(int dim) {
-  std::vector<std::string> out;
-  if (dim == 2) return methods_2d();
-  if (dim == 3) {
-    for (const char* name : {"cvdt+swap+smooth", "cvdt+swap", "cvdt", "combined", "swap", "smooth"})
-      if (methods3().count(name)) out.push_back(name);
-  }
-  return out;
-}
-
-OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
+OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
+  // Every front end's values are checked here, against the one option schema.
+  validate(options, data.dim);
   // Our thread count for the parallel loops (Gmsh may have set the process's to 1), the caller's
   // back on return.
   const ThreadCountScope threads;
+  if (data.dim == 2) return optimize_2d(data.tri, options);
+  const OptimizeOptions o = resolve(options, 3);
   OptimizeResult r;
   const auto t0 = std::chrono::steady_clock::now();
-  if (data.dim == 3) {
-    auto it = methods3().find(o.method);
-    if (it == methods3().end()) throw std::invalid_argument("unknown 3D method '" + o.method + "'");
-    if (o.hops > 0)
-      throw std::invalid_argument("basin hopping (--hops) is a 2D option; this mesh is 3D");
-    r.before = quality_stats(data.tet, "before");
-    const TetMesh input = data.tet;
-    if (!o.fix_boundary && o.method == "cvdt+swap+smooth") {
-      const BoundaryModel b = boundary_model(data.tet, o);
-      run_cvdt_swap_smooth_free3(data.tet, o, b, r);
-      VerifyOptions vo;
-      vo.boundary_moves = true;
-      vo.volume_tolerance = o.volume_tolerance;
-      if (o.verify) verify_optimized(input, data.tet, vo);
-      FreeBoundaryTolerances ft;
-      ft.hausdorff = o.verify ? hausdorff_tolerance(o, b) : 0;
-      ft.volume = o.verify ? o.volume_tolerance : 1e300;
-      const FreeBoundaryReport fr = verify_free_boundary(input, data.tet, b, ft);
-      r.boundary_free = true;
-      r.nb_boundary_moved = fr.nb_moved;
-      r.nb_surface_vertices = b.nb_surface_vertices;
-      r.nb_curve_vertices = b.nb_curve_vertices;
-      r.nb_fixed_vertices = b.nb_fixed_vertices;
-      r.hausdorff = fr.hausdorff.value();
-      r.hausdorff_tolerance = hausdorff_tolerance(o, b);
-      r.diagonal = fr.diagonal;
-      r.volume_change = fr.max_volume_change;
-      r.tri_q_min_before = fr.tri_q_min_before;
-      r.tri_q_min_after = fr.tri_q_min_after;
-    } else {
-      it->second(data.tet, o, r);
-      if (o.verify) verify_optimized(input, data.tet);
-    }
-    r.after = quality_stats(data.tet, o.method);
-    r.method = o.method;
+  const MethodInfo* method = find_method(o.method, 3);
+  r.before = quality_stats(data.tet, "before");
+  const TetMesh input = data.tet;
+  if (!o.fix_boundary && o.method == "cvdt+swap+smooth") {
+    // The default method moves the boundary (issue 13; core/boundary/).
+    const BoundaryModel b = boundary_model(data.tet, o);
+    run_cvdt_swap_smooth_free3(data.tet, o, b, r);
+    VerifyOptions vo;
+    vo.boundary_moves = true;
+    vo.volume_tolerance = o.volume_tolerance;
+    if (o.verify) verify_optimized(input, data.tet, vo);
+    FreeBoundaryTolerances ft;
+    ft.hausdorff = o.verify ? hausdorff_tolerance(o, b) : 0;
+    ft.volume = o.verify ? o.volume_tolerance : 1e300;
+    const FreeBoundaryReport fr = verify_free_boundary(input, data.tet, b, ft);
+    r.boundary_free = true;
+    r.nb_boundary_moved = fr.nb_moved;
+    r.nb_surface_vertices = b.nb_surface_vertices;
+    r.nb_curve_vertices = b.nb_curve_vertices;
+    r.nb_fixed_vertices = b.nb_fixed_vertices;
+    r.hausdorff = fr.hausdorff.value();
+    r.hausdorff_tolerance = hausdorff_tolerance(o, b);
+    r.diagonal = fr.diagonal;
+    r.volume_change = fr.max_volume_change;
+    r.tri_q_min_before = fr.tri_q_min_before;
+    r.tri_q_min_after = fr.tri_q_min_after;
   } else {
-    // 2D: the default 3D method name maps to the 2D CVT.
-    OptimizeOptions o2 = o;
-    if (o2.method == "cvdt+swap+smooth") o2.method = "cvdt";
-    OptimizeResult r2 = optimize_2d(data.tri, o2);
-    r2.method = o2.method;
-    return r2;
+    method->run3(data.tet, o, r);
+    if (o.verify) verify_optimized(input, data.tet);
   }
+  r.after = quality_stats(data.tet, o.method);
+  r.method = o.method;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -1,7 +1,8 @@
 // The reference geometry of a model's boundary, behind one interface: the closest point on a
 // surface patch or on a curve. Two implementations: the input boundary triangulation itself
-// (discrete_boundary.h, CGAL AABB trees) and the CAD entities of a live Gmsh model
+// (core/boundary/discrete_boundary.h, CGAL AABB trees) and the CAD entities of a live Gmsh model
 // (core/io/gmsh_cad_boundary.h). The boundary moves (core/boundary/*) see only this interface.
+// In the geometry layer (no dependency) so that both core/boundary/ and core/io/ implement it.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -60,6 +61,19 @@ struct BoundaryModel {
     const BoundaryRole r = role_of(v).role;
     return r == BoundaryRole::kCurve || r == BoundaryRole::kSurface;
   }
+};
+
+// What the builders of a BoundaryModel are told.
+struct BoundaryModelOptions {
+  double feature_angle = 40;          // degrees: a sharper turn across an edge is a feature
+  std::vector<int> locked_surfaces;   // Gmsh surface tags whose vertices stay fixed
+  std::vector<int> locked_curves;     // Gmsh curve tags whose vertices stay fixed
+  // Gmsh's curves and points where the surface is smooth (no turn above feature_angle across
+  // them, e.g. the patch boundaries of a reparametrized STL) are not features: the patches on
+  // both sides are one, and their vertices move on it (their triangles keep their surface tags;
+  // the curve's line elements follow the vertices). false (default): every Gmsh curve is kept.
+  // (Discrete geometry only.)
+  bool free_smooth_curves = false;
 };
 
 }  // namespace cvtmesh
