@@ -157,8 +157,6 @@ TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
   ASSERT_GE(s.energy.size(), 3u);
   for (std::size_t i = 1; i < s.energy.size(); ++i) EXPECT_LE(s.energy[i], s.energy[i - 1]) << i;
   EXPECT_LT(s.energy.back(), 0.99 * s.energy.front());
-  // With the boundary fixed (corner-only box: every vertex locked) only interior vertices move:
-  // the energy still decreases, less.
 }
 
 TEST(BoundaryMoves, ARefusedMoveLeavesTheMeshUnchanged) {
@@ -183,8 +181,7 @@ TEST(BoundaryMoves, ARefusedMoveLeavesTheMeshUnchanged) {
   // A corner is not movable.
   EXPECT_EQ(plan_boundary_move(m, b, star, fans, 0, far, 1e300).status,
             BoundaryMoveStatus::kNotMovable);
-  // A tight Hausdorff tolerance refuses a move off a curved... here flat faces: a tangential move
-  // stays at distance 0, accepted with tolerance 0 + rounding.
+  // On a flat face a tangential move stays on the reference: accepted with a 1e-12 tolerance.
   double near[3];
   for (int d = 0; d < 3; ++d) near[d] = m.point(face)[d];
   for (int d = 0; d < 3; ++d)
