@@ -21,6 +21,10 @@ void register_optimize(CLI::App& app) {
   c->add_option("-o,--output", out->path, "output file (format by extension)")->required();
   add_output_flags(c, *out);
   add_schema_options(c, *opt);
+  // Not in the schema (a list of names): the free boundary's locked physical groups.
+  c->add_option("--lock-physical", opt->lock_physical,
+                "free boundary: keep the surfaces / curves of this physical group (by name) fixed; "
+                "repeatable");
   c->add_flag("-q,--quiet", *quiet, "no progress on stderr");
   commands().push_back(
       {c, [in, out, opt, quiet] {
@@ -55,6 +59,16 @@ void register_optimize(CLI::App& app) {
          after.extra.push_back({"seconds", r.seconds});
          t.columns = {before, after};
          if (!*quiet) std::cerr << t.to_text();
+         if (!*quiet && r.boundary_free)
+           std::fprintf(stderr,
+                        "free boundary: %d surface, %d curve, %d fixed vertices; "
+                        "%d vertices moved, Hausdorff %.3e (%.2e of the diagonal, "
+                        "bound %.3e), volume change %.4f %%, worst boundary triangle Q %.4f -> "
+                        "%.4f\n",
+                        r.nb_surface_vertices, r.nb_curve_vertices, r.nb_fixed_vertices,
+                        r.nb_boundary_moved, r.hausdorff, r.hausdorff / r.diagonal,
+                        r.hausdorff_tolerance, 100 * r.volume_change, r.tri_q_min_before,
+                        r.tri_q_min_after);
          std::cerr << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
                    << " iterations, " << (r.converged ? "converged" : "not converged") << ")\n";
          return 0;

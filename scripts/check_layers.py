@@ -21,7 +21,8 @@ BELOW = {
     "delaunay": ["swap"],
     "cvt": ["delaunay"],
     "smoothing": ["cvt"],
-    "pipeline": ["smoothing"],
+    "boundary": ["smoothing"],
+    "pipeline": ["smoothing", "boundary"],
     "io": ["quality"],
 }
 # Third-party headers a layer may use (prefix match); anything else with <...> that is not the
@@ -31,6 +32,7 @@ THIRD_PARTY = {
     "geometry": ["tetgen.h"],
     "delaunay": ["tetgen.h"],
     "quality": ["nlohmann/"],
+    "boundary": ["CGAL/"],
 }
 FORBIDDEN = ["FL/", "onelab", "GmshSocket", "gmsh.h_cwrap", "CLI/", "pybind11"]
 STD = re.compile(r"^[a-z_0-9]+(\.h)?$")  # <vector>, <cmath>, <omp.h>, <dlfcn.h>, ...

@@ -26,6 +26,7 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
     const SmoothStats ss = smooth_laplacian(mesh, smooth);
     if (options.maxmin)
       stats.nb_maxmin_moved += smooth_maxmin3(mesh, options.maxmin_options).nb_moved;
+    if (options.extra_smoothing) stats.nb_maxmin_moved += options.extra_smoothing(mesh);
     if (options.keep_min_q) {
       double q_min = std::numeric_limits<double>::infinity();
       for (double q : element_qualities(mesh, Measure::kQ)) q_min = std::min(q_min, q);

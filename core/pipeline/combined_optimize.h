@@ -23,6 +23,10 @@ struct CombinedOptions {
   // each iteration (off in the classical CombOpt).
   bool maxmin = false;
   MaxMinOptions maxmin_options;
+  // Called after the max-min smoothing of each iteration (the pipeline's boundary max-min when
+  // the boundary is free); returns the number of changes it made. Must leave the mesh valid,
+  // its tets compacted and its adjacency built (it may flip).
+  std::function<long(TetMesh&)> extra_smoothing;
   // Raise the flips' guard floor (swap.guard_floor, with swap.use_guard) to the mesh's current
   // minimum Q before each iteration's flips, so that they never lower the global minimum Q.
   bool keep_min_q = false;

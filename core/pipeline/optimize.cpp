@@ -5,6 +5,11 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/boundary/boundary_lloyd.h"
+#include "core/boundary/discrete_boundary.h"
+#include "core/boundary/flip_boundary_edges.h"
+#include "core/boundary/smooth_boundary_maxmin.h"
+#include "core/boundary/verify_free_boundary.h"
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/pipeline/combined_optimize.h"
@@ -107,8 +112,10 @@ void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
 // poor tets (smooth_maxmin3, unless !polish_maxmin) and flips improving the minimal dihedral
 // angle that may not lower the minimum Q either, iterated (the CombOpt operators with a Q guard
 // on the flips); then the repair of the slivers left (repair_slivers, unless !polish_repair).
-void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r,
+                      std::function<long(TetMesh&)> boundary_smoothing) {
   CombinedOptions co;
+  co.extra_smoothing = std::move(boundary_smoothing);
   co.max_iterations = o.max_iterations;
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
@@ -129,6 +136,10 @@ void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   }
 }
 
+void run_polish3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  run_polish3_with(mesh, o, r, nullptr);
+}
+
 // CVDT + SWAP, then the polish (removes near-boundary slivers that flips alone cannot).
 void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   run_cvdt_swap3(mesh, o, r);
@@ -138,6 +149,92 @@ void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResu
   r.iterations = lloyd_iterations;
 }
 
+namespace {
+
+// The boundary a free-boundary run may move: the discrete reference geometry of the input, with
+// the user's locked physical groups.
+BoundaryModel boundary_model(const TetMesh& mesh, const OptimizeOptions& o) {
+  BoundaryModelOptions bo;
+  bo.feature_angle = o.feature_angle;
+  bo.free_smooth_curves = o.free_smooth_curves;
+  for (const std::string& name : o.lock_physical) {
+    bool found = false;
+    for (const PhysicalGroup& g : mesh.model.groups)
+      if (g.name == name && (g.dim == 2 || g.dim == 1)) {
+        auto& to = g.dim == 2 ? bo.locked_surfaces : bo.locked_curves;
+        to.insert(to.end(), g.entities.begin(), g.entities.end());
+        found = true;
+      }
+    if (!found)
+      throw std::invalid_argument("lock_physical: no surface or curve physical group named '" +
+                                  name + "'");
+  }
+  return o.boundary_model ? o.boundary_model(mesh, bo) : make_discrete_boundary(mesh, bo);
+}
+
+double hausdorff_tolerance(const OptimizeOptions& o, const BoundaryModel& b) {
+  return o.hausdorff > 0 ? o.hausdorff : 2e-3 * b.diagonal;
+}
+
+// The default method with a free boundary: Lloyd (interior) as with a fixed boundary, then the
+// constrained CVT of the boundary and interior together (boundary_lloyd), Lloyd again to
+// re-converge the interior, SWAP, and the polish with the boundary max-min after its interior
+// max-min in each iteration, then a last boundary max-min after the sliver repair.
+void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryModel& b,
+                                OptimizeResult& r) {
+  // The moves and flips check a few points per triangle (and the input's vertices on the other
+  // side): they work to 0.8 of the bound, which the end of the run checks on more samples.
+  const double tol = 0.8 * hausdorff_tolerance(o, b);
+  // The volume bound holds by construction: every boundary move is charged to one budget (a
+  // margin below the bound checked at the end, for rounding).
+  // The constrained CVT may spend half of it (it moves every boundary vertex, and on a curved
+  // discrete surface every tangential move cuts a chord), the flips and max-min the rest.
+  VolumeBudget budget = VolumeBudget::of(mesh, 0.45 * o.volume_tolerance);
+  BoundaryFlipOptions bf;
+  bf.hausdorff = tol;
+  bf.volume_budget = &budget;
+  run_cvdt3(mesh, o, r);
+  const int lloyd_iterations = r.iterations;
+  const bool lloyd_converged = r.converged;
+  flip_boundary_edges(mesh, b, bf);
+  if (o.boundary_lloyd_rounds > 0) {
+    BoundaryLloydOptions bl;
+    bl.max_rounds = o.boundary_lloyd_rounds;
+    bl.hausdorff = tol;
+    bl.volume_budget = &budget;
+    const auto sizing = sizing3(mesh, o);
+    const BoundaryLloydStats st = boundary_lloyd(mesh, b, *sizing, bl);
+    for (std::size_t i = 0; i + 1 < st.energy.size(); ++i)
+      report(o, "bnd-cvt", static_cast<int>(i), 0, st.energy[i], QualityStats{});
+    report(o, "bnd-cvt", st.rounds, 0, st.energy.empty() ? 0 : st.energy.back(),
+           quality_stats(mesh, ""));
+    OptimizeOptions again = o;
+    again.max_iterations = std::min(o.max_iterations, 30);
+    OptimizeResult r2;
+    run_cvdt3(mesh, again, r2);
+    r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
+    r.seconds_lloyd += r2.seconds_lloyd;
+  }
+  budget.tolerance = 0.9 * o.volume_tolerance;
+  run_swap3(mesh, o, r);
+  BoundaryMaxMinOptions bm;
+  bm.hausdorff = tol;
+  bm.passes = 1;
+  bm.volume_budget = &budget;
+  OptimizeResult polish;
+  run_polish3_with(mesh, o, polish,
+                   [&](TetMesh& m) {
+                     const long moved = smooth_boundary_maxmin(m, b, bm).nb_moved;
+                     return moved + flip_boundary_edges(m, b, bf).nb_flipped;
+                   });
+  bm.passes = 2;
+  smooth_boundary_maxmin(mesh, b, bm);
+  flip_boundary_edges(mesh, b, bf);
+  r.iterations = lloyd_iterations;
+  r.converged = lloyd_converged;
+}
+
+}  // namespace
 
 OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
                                 const QualityStats& q) {
@@ -174,8 +271,33 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   const MethodInfo* method = find_method(o.method, 3);
   r.before = quality_stats(data.tet, "before");
   const TetMesh input = data.tet;
-  method->run3(data.tet, o, r);
-  if (o.verify) verify_optimized(input, data.tet);
+  if (!o.fix_boundary && o.method == "cvdt+swap+smooth") {
+    // The default method moves the boundary (issue 13; core/boundary/).
+    const BoundaryModel b = boundary_model(data.tet, o);
+    run_cvdt_swap_smooth_free3(data.tet, o, b, r);
+    VerifyOptions vo;
+    vo.boundary_moves = true;
+    vo.volume_tolerance = o.volume_tolerance;
+    if (o.verify) verify_optimized(input, data.tet, vo);
+    FreeBoundaryTolerances ft;
+    ft.hausdorff = o.verify ? hausdorff_tolerance(o, b) : 0;
+    ft.volume = o.verify ? o.volume_tolerance : 1e300;
+    const FreeBoundaryReport fr = verify_free_boundary(input, data.tet, b, ft);
+    r.boundary_free = true;
+    r.nb_boundary_moved = fr.nb_moved;
+    r.nb_surface_vertices = b.nb_surface_vertices;
+    r.nb_curve_vertices = b.nb_curve_vertices;
+    r.nb_fixed_vertices = b.nb_fixed_vertices;
+    r.hausdorff = fr.hausdorff.value();
+    r.hausdorff_tolerance = hausdorff_tolerance(o, b);
+    r.diagonal = fr.diagonal;
+    r.volume_change = fr.max_volume_change;
+    r.tri_q_min_before = fr.tri_q_min_before;
+    r.tri_q_min_after = fr.tri_q_min_after;
+  } else {
+    method->run3(data.tet, o, r);
+    if (o.verify) verify_optimized(input, data.tet);
+  }
   r.after = quality_stats(data.tet, o.method);
   r.method = o.method;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

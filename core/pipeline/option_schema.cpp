@@ -114,6 +114,32 @@ std::vector<OptionSpec> make_schema() {
                       "local smoothing, kept where the local minimum rises (the flag turns it "
                       "off)",
                       kDim3));
+  // The free boundary (issue 13; core/boundary/).
+  v.push_back(boolean("fix_boundary", "--fix-boundary", &O::fix_boundary,
+                      "keep every boundary vertex fixed (the default method otherwise moves "
+                      "surface and curve vertices on the input's geometry; the other methods "
+                      "always keep it fixed)",
+                      kDim3));
+  v.push_back(number("hausdorff", "--hausdorff", &O::hausdorff, 0, kInf,
+                     "free boundary: bound on the two-sided Hausdorff distance between the new "
+                     "and the input boundary, in model units (0 = 2e-3 of the bounding-box "
+                     "diagonal)",
+                     kDim3));
+  v.push_back(number("feature_angle", "--feature-angle", &O::feature_angle, 0, 180,
+                     "free boundary: edges where the surface turns by more than this many "
+                     "degrees are sharp features, kept as curves",
+                     kDim3));
+  v.push_back(boolean("free_smooth_curves", "--free-smooth-curves", &O::free_smooth_curves,
+                      "free boundary: Gmsh curves and points across which the surface is smooth "
+                      "are not kept; their vertices move on the surface",
+                      kDim3));
+  v.push_back(number("volume_tolerance", "--volume-tolerance", &O::volume_tolerance, 0, 1,
+                     "free boundary: bound on each region's relative volume change", kDim3));
+  v.push_back(number("boundary_lloyd_rounds", "--boundary-lloyd-rounds",
+                     &O::boundary_lloyd_rounds, 0, 1000,
+                     "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = "
+                     "none)",
+                     kDim3));
   v.push_back(boolean("verify", "", &O::verify,
                       "check the invariants of the result against the input (InvariantError)",
                       kDim23, 0));

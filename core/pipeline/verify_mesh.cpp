@@ -203,12 +203,16 @@ std::vector<std::pair<int, double>> region_volumes(const TetMesh& m) {
 }
 
 void verify_optimized(const TetMesh& before, const TetMesh& after) {
+  verify_optimized(before, after, VerifyOptions{});
+}
+
+void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyOptions& options) {
   check_valid(after);
   // Fixed vertices (on surfaces, curves, corners) keep their ids and coordinates.
   if (after.nb_vertices() < before.nb_vertices())
     throw InvariantError("optimized mesh lost vertices (" + std::to_string(before.nb_vertices()) +
                          " -> " + std::to_string(after.nb_vertices()) + ")");
-  for (int v = 0; v < before.nb_vertices(); ++v)
+  for (int v = 0; v < before.nb_vertices() && !options.boundary_moves; ++v)
     if (before.vclass[v].dim < 3)
       for (int d = 0; d < 3; ++d)
         if (before.point(v)[d] != after.point(v)[d])
@@ -224,8 +228,23 @@ void verify_optimized(const TetMesh& before, const TetMesh& after) {
     }
     return s;
   };
-  if (tri_set(before) != tri_set(after))
+  if (!options.boundary_moves && tri_set(before) != tri_set(after))
     throw InvariantError("boundary or interface triangles changed");
+  if (options.boundary_moves) {
+    // Surface edge flips may change the triangles: each surface keeps its number of triangles
+    // and its vertices (so, closed or not, its Euler characteristic: a flip keeps V, E and F).
+    auto per_surface = [](const TetMesh& m) {
+      std::map<int, std::pair<int, std::set<int>>> s;
+      for (int f = 0; f < m.nb_tris(); ++f) {
+        auto& e = s[m.tri_surface[f]];
+        ++e.first;
+        for (int k = 0; k < 3; ++k) e.second.insert(m.tris[3 * f + k]);
+      }
+      return s;
+    };
+    if (per_surface(before) != per_surface(after))
+      throw InvariantError("a surface lost or gained triangles or vertices");
+  }
   check_new_vertices(before, after);
   // Region volumes conserved.
   const auto vb = region_volumes(before), va = region_volumes(after);
@@ -233,14 +252,37 @@ void verify_optimized(const TetMesh& before, const TetMesh& after) {
   for (std::size_t i = 0; i < vb.size(); ++i) {
     if (vb[i].first != va[i].first) throw InvariantError("region tags changed");
     // The volume of a region bounded by fixed triangles is fixed; the sums differ by rounding only.
-    const double tol = kVolumeTolerance * std::fabs(vb[i].second);
+    const double tol = options.volume_tolerance * std::fabs(vb[i].second);
     if (std::fabs(vb[i].second - va[i].second) > tol)
       throw InvariantError("volume of region " + std::to_string(vb[i].first) + " changed from " +
                            str(vb[i].second) + " to " + str(va[i].second));
   }
   check_model(before.model, after.model);
-  check_group_boundaries<4>(before.model.groups, 3, before.tets, before.tet_region, before.adj,
-                            after.tets, after.tet_region, after.adj);
+  if (!options.boundary_moves) {
+    check_group_boundaries<4>(before.model.groups, 3, before.tets, before.tet_region, before.adj,
+                              after.tets, after.tet_region, after.adj);
+  } else {
+    // Each volume group is bounded by as many triangles of each surface as before.
+    for (const PhysicalGroup& g : before.model.groups) {
+      if (g.dim != 3) continue;
+      auto tags_of = [&](const TetMesh& m) {
+        std::map<std::array<int, 3>, int> surface;
+        for (int f = 0; f < m.nb_tris(); ++f) {
+          std::array<int, 3> k = {m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]};
+          std::sort(k.begin(), k.end());
+          surface[k] = m.tri_surface[f];
+        }
+        std::map<int, int> count;  // surface tag (-1: not a constrained triangle) -> facets
+        for (const auto& k : regions_boundary<4>(m.tets, m.tet_region, m.adj, g.entities)) {
+          const auto it = surface.find(k);
+          ++count[it == surface.end() ? -1 : it->second];
+        }
+        return count;
+      };
+      if (tags_of(before) != tags_of(after))
+        throw InvariantError(group_name(g) + " is no longer bounded by the same surfaces");
+    }
+  }
 }
 
 void verify_optimized(const TriMesh2& before, const TriMesh2& after) {

@@ -17,6 +17,17 @@ namespace cvtmesh {
 // entities and, for groups of the mesh's dimension, bounded by the same triangles (edges), the
 // model's entities with the same boundaries, the point and line elements unchanged.
 void verify_optimized(const TetMesh& before, const TetMesh& after);
+
+// The same with a boundary that may move (the free-boundary optimization): boundary vertices are
+// not required to stay put (core/boundary/verify_free_boundary.h checks where they went), each
+// region's volume may change by up to `volume_tolerance` relative, and surface edge flips may
+// change the triangles: each surface keeps its number of triangles and its vertices, each volume
+// group is bounded by as many triangles of each surface as before.
+struct VerifyOptions {
+  bool boundary_moves = false;
+  double volume_tolerance = 1e-12;
+};
+void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyOptions& options);
 void verify_optimized(const TriMesh2& before, const TriMesh2& after);
 
 // Volume of each region, indexed by region tag (sorted by tag); a compensated sum.

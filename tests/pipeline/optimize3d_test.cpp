@@ -30,6 +30,7 @@ TEST(Optimize3d, EveryMethodKeepsRegionsInterfacesAndGroupsOfTheTwoRegionModel) 
     OptimizeOptions o;
     o.method = method;
     o.max_iterations = 6;
+    o.fix_boundary = true;  // the free boundary: tests/boundary/
     const OptimizeResult r = optimize(d, o);  // runs verify_optimized (throws on a violation)
     EXPECT_EQ(r.method, method);
     EXPECT_TRUE(check_mesh(d.tet).ok) << method;

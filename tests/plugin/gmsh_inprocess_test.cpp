@@ -104,6 +104,7 @@ TEST_F(GmshInProcess, EveryMethodOptimizesTheCurrentModelInPlace) {
     GmshOptimizeOptions o;
     o.optimize.method = method;
     o.optimize.max_iterations = 4;
+    o.optimize.fix_boundary = true;  // the fixed-boundary contract (free boundary: tests/boundary/)
     o.quality_views = true;
     const GmshOptimizeResult r = gmsh_optimize(o);
 

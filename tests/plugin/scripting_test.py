@@ -90,8 +90,10 @@ class InProcessScripting(unittest.TestCase):
         self.assertEqual(len(icn_before), nb_tets())
         progress = []
 
+        # fix_boundary: this test checks the fixed-boundary contract (the default method moves
+        # the boundary since issue 13; tests/boundary/ covers that).
         table = cvtmesh.optimize(method=moving_method(), max_iterations=10, quality_views=True,
-                                 progress=progress.append)
+                                 fix_boundary=True, progress=progress.append)
 
         # The table: the paper's rows, before and after.
         self.assertEqual(table["method"], moving_method())

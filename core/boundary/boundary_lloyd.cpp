@@ -1,0 +1,132 @@
+#include "core/boundary/boundary_lloyd.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <stdexcept>
+
+#include "core/boundary/boundary_fans.h"
+#include "core/boundary/boundary_move.h"
+#include "core/cvt/lloyd3.h"
+#include "core/delaunay/restore_delaunay3.h"
+#include "core/geometry/predicates.h"
+#include "core/geometry/vec3.h"
+#include "core/quality/quality.h"
+#include "core/mesh/build_adjacency.h"
+#include "core/mesh/vertex_tets.h"
+#include "core/swap/constrained_faces.h"
+
+namespace cvtmesh {
+namespace {
+
+// Moves interior vertex v to p if its star stays positively oriented.
+bool move_interior(TetMesh& m, const VertexTets& star, int v, const double* p) {
+  auto at = [&](int w) { return w == v ? p : m.point(w); };
+  for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
+    const int* w = &m.tets[4 * static_cast<std::size_t>(*t)];
+    if (orient3d(at(w[0]), at(w[1]), at(w[2]), at(w[3])) <= 0) return false;
+  }
+  for (int d = 0; d < 3; ++d) m.point(v)[d] = p[d];
+  return true;
+}
+
+// The minimum Q of v's star tets and of its fan triangles.
+std::pair<double, double> star_minima(const TetMesh& m, const VertexTets& star,
+                                      const BoundaryFans& fans, int v) {
+  double q = 1, t = 1;
+  for (const int* s = star.begin_of(v); s != star.end_of(v); ++s) {
+    const int* w = &m.tets[4 * static_cast<std::size_t>(*s)];
+    q = std::min(q, tet_quality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]),
+                                Measure::kQ));
+  }
+  for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f) {
+    const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];
+    t = std::min(t, tri_quality(m.point(w[0]), m.point(w[1]), m.point(w[2]), 3, Measure::kQ));
+  }
+  return {q, t};
+}
+
+}  // namespace
+
+BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
+                                  const SizingField3& sizing, const BoundaryLloydOptions& o) {
+  if (!(o.relaxation > 0 && o.relaxation < 2) || o.max_rounds < 0 || o.max_halvings < 0)
+    throw std::invalid_argument("boundary_lloyd: relaxation in (0,2), rounds and halvings >= 0");
+  if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
+  BoundaryLloydStats stats;
+  std::vector<int> hints;
+  CellCentroids cc = voronoi_centroids_3d(mesh, sizing, &hints);
+  stats.energy.push_back(cc.energy);
+  const double h = mean_edge_length(mesh);
+  double omega = o.relaxation;
+  int halvings = 0;
+  for (int round = 0; round < o.max_rounds;) {
+    const TetMesh backup = mesh;
+    const VolumeBudget budget_backup = o.volume_budget ? *o.volume_budget : VolumeBudget{};
+    std::vector<double> delta;
+    const VertexTets star = vertex_tets(mesh);
+    const BoundaryFans fans = boundary_fans(mesh);
+    long moved = 0, refused = 0, nb_boundary = 0;
+    double sum_move2 = 0;
+    for (int v = 0; v < mesh.nb_vertices(); ++v) {
+      if (star.nb_tets_of(v) == 0) continue;
+      const double* z = mesh.point(v);
+      double wanted[3];
+      for (int d = 0; d < 3; ++d) wanted[d] = z[d] + omega * (cc.centroid[3 * v + d] - z[d]);
+      if (model.movable(v)) {
+        ++nb_boundary;
+        const PlannedBoundaryMove plan =
+            plan_boundary_move(mesh, model, star, fans, v, wanted, o.hausdorff);
+        if (plan.status != BoundaryMoveStatus::kOk) {
+          ++refused;
+          continue;
+        }
+        if (o.volume_budget && !o.volume_budget->admits(mesh, star, v, plan.position, delta)) {
+          ++refused;
+          continue;
+        }
+        const auto before = star_minima(mesh, star, fans, v);
+        const Vec3 old = vec3(z);
+        apply_boundary_move(mesh, v, plan);
+        const auto after = star_minima(mesh, star, fans, v);
+        if (after.first < std::min(before.first, o.q_guard) ||
+            after.second < std::min(before.second, o.tri_guard)) {
+          for (int d = 0; d < 3; ++d) mesh.point(v)[d] = old[d];
+          ++refused;
+          continue;
+        }
+        if (o.volume_budget) o.volume_budget->commit(delta);
+        double d2 = 0;
+        for (int d = 0; d < 3; ++d) d2 += (plan.position[d] - old[d]) * (plan.position[d] - old[d]);
+        sum_move2 += d2;
+        ++moved;
+      } else if (o.move_interior && v < static_cast<int>(mesh.vclass.size()) &&
+                 mesh.vclass[v].dim == 3) {
+        move_interior(mesh, star, v, wanted);
+      }
+    }
+    const ConstrainedFaces constrained = constrained_faces(mesh);
+    restore_delaunay_by_flips(mesh, constrained, false);
+    if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
+    CellCentroids next = voronoi_centroids_3d(mesh, sizing, &hints);
+    if (next.energy > cc.energy) {
+      mesh = backup;
+      if (o.volume_budget) *o.volume_budget = budget_backup;
+      ++stats.nb_undone;
+      if (++halvings > o.max_halvings) break;
+      omega *= 0.5;
+      continue;
+    }
+    cc = std::move(next);
+    stats.energy.push_back(cc.energy);
+    stats.nb_moved += moved;
+    stats.nb_refused += refused;
+    ++stats.rounds;
+    ++round;
+    const double D = nb_boundary ? sum_move2 / (nb_boundary * h * h) : 0;
+    if (D < o.tolerance) break;
+  }
+  return stats;
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,116 @@
+#include "core/boundary/triangle_set_distance.h"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cvtmesh {
+namespace {
+
+using K = CGAL::Simple_cartesian<double>;
+using Triangles = std::vector<K::Triangle_3>;
+using Segments = std::vector<K::Segment_3>;
+using TriPrimitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
+using TriTree = CGAL::AABB_tree<CGAL::AABB_traits<K, TriPrimitive>>;
+using SegPrimitive = CGAL::AABB_segment_primitive<K, Segments::const_iterator>;
+using SegTree = CGAL::AABB_tree<CGAL::AABB_traits<K, SegPrimitive>>;
+
+K::Point_3 point(const std::vector<double>& xyz, int i) {
+  const std::size_t k = 3 * static_cast<std::size_t>(i);
+  return {xyz[k], xyz[k + 1], xyz[k + 2]};
+}
+
+}  // namespace
+
+struct TriangleSetDistance::Impl {
+  Triangles triangles;
+  TriTree tree;
+};
+
+TriangleSetDistance::TriangleSetDistance(const std::vector<double>& xyz,
+                                         const std::vector<int>& tris)
+    : impl_(std::make_unique<Impl>()) {
+  for (std::size_t f = 0; f + 2 < tris.size(); f += 3) {
+    K::Triangle_3 t(point(xyz, tris[f]), point(xyz, tris[f + 1]), point(xyz, tris[f + 2]));
+    if (!t.is_degenerate()) impl_->triangles.push_back(t);
+  }
+  if (!impl_->triangles.empty()) {
+    impl_->tree.insert(impl_->triangles.begin(), impl_->triangles.end());
+    impl_->tree.build();
+    impl_->tree.accelerate_distance_queries();
+  }
+}
+
+TriangleSetDistance::~TriangleSetDistance() = default;
+
+bool TriangleSetDistance::empty() const { return impl_->triangles.empty(); }
+
+bool TriangleSetDistance::closest(const double* p, double* q) const {
+  if (impl_->triangles.empty()) return false;
+  const K::Point_3 c = impl_->tree.closest_point(K::Point_3(p[0], p[1], p[2]));
+  q[0] = c.x();
+  q[1] = c.y();
+  q[2] = c.z();
+  return true;
+}
+
+double TriangleSetDistance::distance(const double* p) const {
+  double q[3];
+  if (!closest(p, q)) return std::numeric_limits<double>::infinity();
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                   (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+struct SegmentSetDistance::Impl {
+  Segments segments;
+  SegTree tree;
+};
+
+SegmentSetDistance::SegmentSetDistance(const std::vector<double>& xyz,
+                                       const std::vector<int>& segments)
+    : impl_(std::make_unique<Impl>()) {
+  for (std::size_t e = 0; e + 1 < segments.size(); e += 2) {
+    K::Segment_3 s(point(xyz, segments[e]), point(xyz, segments[e + 1]));
+    if (!s.is_degenerate()) impl_->segments.push_back(s);
+  }
+  if (!impl_->segments.empty()) {
+    impl_->tree.insert(impl_->segments.begin(), impl_->segments.end());
+    impl_->tree.build();
+    impl_->tree.accelerate_distance_queries();
+  }
+}
+
+SegmentSetDistance::~SegmentSetDistance() = default;
+
+bool SegmentSetDistance::empty() const { return impl_->segments.empty(); }
+
+bool SegmentSetDistance::closest(const double* p, double* q) const {
+  if (impl_->segments.empty()) return false;
+  const K::Point_3 c = impl_->tree.closest_point(K::Point_3(p[0], p[1], p[2]));
+  q[0] = c.x();
+  q[1] = c.y();
+  q[2] = c.z();
+  return true;
+}
+
+double point_triangle_distance(const double* p, const double* a, const double* b, const double* c) {
+  const K::Triangle_3 t(K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2]),
+                        K::Point_3(c[0], c[1], c[2]));
+  const K::Point_3 q(p[0], p[1], p[2]);
+  if (t.is_degenerate()) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const double* x : {a, b, c})
+      best = std::min(best, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
+                                      (p[2] - x[2]) * (p[2] - x[2])));
+    return best;
+  }
+  return std::sqrt(CGAL::to_double(CGAL::squared_distance(q, t)));
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,194 @@
+// Boundary optimization on a box whose whole boundary is one surface entity (like an STL box):
+// the discrete geometry finds its 6 faces, 12 feature edges and 8 corners by the feature angle;
+// the constrained CVT and the boundary max-min keep face vertices on their faces, edge vertices
+// on their edges and corners in place, never invert a tet, never raise the CVT energy, and make
+// the faces' triangles better.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/boundary/boundary_lloyd.h"
+#include "core/boundary/boundary_move.h"
+#include "core/boundary/discrete_boundary.h"
+#include "core/boundary/smooth_boundary_maxmin.h"
+#include "core/boundary/verify_free_boundary.h"
+#include "core/cvt/sizing_field3.h"
+#include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality.h"
+#include "tests/swap/swap_test_util.h"
+
+namespace cvtmesh {
+namespace {
+
+constexpr int kN = 4;  // the box [0, 4]^3, lattice spacing 1
+
+// How many coordinates of p are on the box's faces (0 or kN).
+int nb_on_faces(const double* p) {
+  int k = 0;
+  for (int d = 0; d < 3; ++d) k += p[d] == 0 || p[d] == kN;
+  return k;
+}
+
+// The lattice with every point jittered within its own face / edge (corners exact), by up to
+// `amount`, deterministic.
+TetMesh jittered_box(double amount) {
+  std::vector<double> xyz;
+  unsigned state = 12345;
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / double(1 << 24) * 2 - 1;
+  };
+  for (int i = 0; i <= kN; ++i)
+    for (int j = 0; j <= kN; ++j)
+      for (int k = 0; k <= kN; ++k) {
+        double p[3] = {double(i), double(j), double(k)};
+        for (int d = 0; d < 3; ++d) {
+          const double r = rnd();
+          if (p[d] != 0 && p[d] != kN) p[d] += amount * r;
+        }
+        xyz.insert(xyz.end(), p, p + 3);
+      }
+  return testing::delaunay_of_points(xyz);
+}
+
+double face_tri_q_min(const TetMesh& m, const TetMesh& ref, int d, double value) {
+  double q = 1;
+  for (int f = 0; f < m.nb_tris(); ++f) {
+    const int* v = &m.tris[3 * f];
+    if (ref.point(v[0])[d] == value && ref.point(v[1])[d] == value && ref.point(v[2])[d] == value)
+      q = std::min(q, tri_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), 3, Measure::kQ));
+  }
+  return q;
+}
+
+TEST(DiscreteBoundary, AnStlBoxHasSixFacesTwelveFeatureEdgesAndEightCorners) {
+  const TetMesh m = jittered_box(0.25);
+  ASSERT_TRUE(check_mesh(m).ok);
+  const BoundaryModel b = make_discrete_boundary(m);
+  std::set<int> surfaces, curves;
+  int corners = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    const VertexRole r = b.role_of(v);
+    const int on = nb_on_faces(m.point(v));
+    if (on == 3) {
+      EXPECT_EQ(r.role, BoundaryRole::kFixed) << v;
+      ++corners;
+    } else if (on == 2) {
+      EXPECT_EQ(r.role, BoundaryRole::kCurve) << v;
+      curves.insert(r.entity);
+    } else if (on == 1) {
+      EXPECT_EQ(r.role, BoundaryRole::kSurface) << v;
+      surfaces.insert(r.entity);
+    } else {
+      EXPECT_EQ(r.role, BoundaryRole::kInterior) << v;
+    }
+  }
+  EXPECT_EQ(corners, 8);
+  EXPECT_EQ(b.nb_fixed_vertices, 8);
+  EXPECT_EQ(curves.size(), 12u);
+  EXPECT_EQ(surfaces.size(), 6u);
+  // A feature angle above 90 degrees makes the whole box one smooth patch: no curves, no corners.
+  BoundaryModelOptions o;
+  o.feature_angle = 95;
+  EXPECT_EQ(make_discrete_boundary(m, o).nb_fixed_vertices, 0);
+}
+
+TEST(BoundaryMoves, FaceEdgeAndCornerVerticesStayOnTheirEntitiesAndTheFacesImprove) {
+  TetMesh m = jittered_box(0.3);
+  const TetMesh start = m;
+  const BoundaryModel b = make_discrete_boundary(m);
+  const auto sizing = make_uniform_sizing3(1.0);
+  // The boundary max-min alone (the constrained CVT optimizes the volume's cells, not the
+  // faces' triangles): every face triangle is guarded at its fan's minimum and in the objective.
+  (void)sizing;
+  BoundaryMaxMinOptions mo;
+  mo.tri_below = 1;
+  mo.tri_floor = 1;
+  mo.passes = 4;
+  const BoundaryMaxMinStats ms = smooth_boundary_maxmin(m, b, mo);
+  EXPECT_GT(ms.nb_tried, 0);
+  ASSERT_TRUE(check_mesh(m).ok);
+  EXPECT_EQ(testing::nb_not_positive(m), 0);
+  int moved_face = 0, moved_edge = 0;
+  for (int v = 0; v < m.nb_vertices() && v < start.nb_vertices(); ++v) {
+    const double *p = m.point(v), *p0 = start.point(v);
+    const int on = nb_on_faces(p0);
+    // The coordinates that put p0 on faces: kept to 1e-12.
+    for (int d = 0; d < 3; ++d)
+      if (p0[d] == 0 || p0[d] == kN) EXPECT_NEAR(p[d], p0[d], 1e-12) << v;
+    const bool moved = p[0] != p0[0] || p[1] != p0[1] || p[2] != p0[2];
+    if (on == 3) EXPECT_FALSE(moved) << "corner " << v << " moved";
+    if (on == 2 && moved) ++moved_edge;
+    if (on == 1 && moved) ++moved_face;
+    // Inside the box.
+    for (int d = 0; d < 3; ++d) EXPECT_TRUE(p[d] >= -1e-12 && p[d] <= kN + 1e-12);
+  }
+  EXPECT_GT(moved_face, 0);
+  EXPECT_GT(moved_edge, 0);
+  // Every face's worst triangle is better.
+  for (int d = 0; d < 3; ++d)
+    for (double value : {0.0, double(kN)})
+      EXPECT_GT(face_tri_q_min(m, start, d, value), face_tri_q_min(start, start, d, value))
+          << "face " << d << "=" << value;
+  // The end-of-run invariants hold: same triangles, volume unchanged (flat faces, fixed corners).
+  VerifyOptions vo;
+  vo.boundary_moves = true;
+  vo.volume_tolerance = 1e-9;
+  EXPECT_NO_THROW(verify_optimized(start, m, vo));
+  FreeBoundaryTolerances ft;
+  ft.hausdorff = 1e-9;
+  const FreeBoundaryReport r = verify_free_boundary(start, m, b, ft);
+  EXPECT_LE(r.hausdorff.value(), 1e-9);
+  EXPECT_GT(r.tri_q_min_after, r.tri_q_min_before);
+}
+
+TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
+  TetMesh m = jittered_box(0.3);
+  const BoundaryModel b = make_discrete_boundary(m);
+  const auto sizing = make_uniform_sizing3(1.0);
+  BoundaryLloydOptions o;
+  o.max_rounds = 8;
+  o.tolerance = 0;
+  const BoundaryLloydStats s = boundary_lloyd(m, b, *sizing, o);
+  ASSERT_GE(s.energy.size(), 3u);
+  for (std::size_t i = 1; i < s.energy.size(); ++i) EXPECT_LE(s.energy[i], s.energy[i - 1]) << i;
+  EXPECT_LT(s.energy.back(), 0.99 * s.energy.front());
+}
+
+TEST(BoundaryMoves, ARefusedMoveLeavesTheMeshUnchanged) {
+  TetMesh m = jittered_box(0.3);
+  const BoundaryModel b = make_discrete_boundary(m);
+  const VertexTets star = vertex_tets(m);
+  const BoundaryFans fans = boundary_fans(m);
+  int face = -1;
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    if (b.role_of(v).role == BoundaryRole::kSurface) {
+      face = v;
+      break;
+    }
+  ASSERT_GE(face, 0);
+  // Far across the face: some tet of the star inverts.
+  double far[3];
+  for (int d = 0; d < 3; ++d) far[d] = m.point(face)[d];
+  for (int d = 0; d < 3; ++d)
+    if (far[d] != 0 && far[d] != kN) far[d] += 1.5;
+  const PlannedBoundaryMove p = plan_boundary_move(m, b, star, fans, face, far, 1e300);
+  EXPECT_EQ(p.status, BoundaryMoveStatus::kInverted);
+  // A corner is not movable.
+  EXPECT_EQ(plan_boundary_move(m, b, star, fans, 0, far, 1e300).status,
+            BoundaryMoveStatus::kNotMovable);
+  // On a flat face a tangential move stays on the reference: accepted with a 1e-12 tolerance.
+  double near[3];
+  for (int d = 0; d < 3; ++d) near[d] = m.point(face)[d];
+  for (int d = 0; d < 3; ++d)
+    if (near[d] != 0 && near[d] != kN) near[d] += 0.01;
+  EXPECT_EQ(plan_boundary_move(m, b, star, fans, face, near, 1e-12).status,
+            BoundaryMoveStatus::kOk);
+}
+
+}  // namespace
+}  // namespace cvtmesh
