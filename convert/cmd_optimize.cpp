@@ -56,6 +56,7 @@ void register_optimize(CLI::App& app) {
   auto out = std::make_shared<OutputOpts>();
   auto opt = std::make_shared<OptimizeOptions>();
   auto quiet = std::make_shared<bool>(false);
+  auto strict = std::make_shared<bool>(false);
   CLI::App* c = app.add_subcommand(
       "optimize", "optimize a mesh (CVT/Lloyd CVDT, sliver swaps, classical baselines)");
   add_input(c, *in);
@@ -63,8 +64,14 @@ void register_optimize(CLI::App& app) {
   add_output_flags(c, *out);
   add_method_options(c, *opt);
   c->add_flag("-q,--quiet", *quiet, "no progress on stderr");
+  c->add_flag("--strict", *strict,
+              "exit with code 6 (after writing the output) when the method stopped at the "
+              "iteration cap, fell back to local operations, or the input was kept");
+  c->add_flag("!--allow-worse", opt->never_worse,
+              "keep the method's result even if its Q_min or dihedral angles are worse than the "
+              "input's (default: fall back to the polish alone, or keep the input)");
   commands().push_back(
-      {c, [in, out, opt, quiet] {
+      {c, [in, out, opt, quiet, strict] {
          MeshData d = read_mesh(in->path, in->to_read_options());
          // A bad output location fails now, not after the optimization.
          check_can_write(out->path, out->to_write_options(d, in->path));
@@ -95,9 +102,17 @@ void register_optimize(CLI::App& app) {
          after.extra.push_back({"seconds", r.seconds});
          t.columns = {before, after};
          if (!*quiet) std::cerr << t.to_text();
+         for (const auto& note : r.notes) std::cerr << "cvtmesh: note: " << note << "\n";
+         const bool capped = !r.converged && !r.kept_input;
+         if (capped)
+           std::cerr << "cvtmesh: warning: '" << r.method << "' stopped at the iteration cap ("
+                     << r.iterations << " iterations) before converging; raise --max-iterations "
+                     << "or --tolerance\n";
          std::cerr << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
-                   << " iterations, " << (r.converged ? "converged" : "not converged") << ")\n";
-         return 0;
+                   << " iterations, " << (r.converged ? "converged" : "not converged")
+                   << (r.kept_input ? ", input kept unchanged" : "") << ")\n";
+         const bool fell_back = r.kept_input || r.method != opt->method;
+         return *strict && (capped || fell_back) ? 6 : 0;
        }});
 }
 

@@ -12,6 +12,11 @@
 #include "core/pipeline/repair_slivers.h"
 #include "core/swap/swap_slivers.h"
 #include "core/pipeline/verify_mesh.h"
+#include "core/geometry/round_coordinates.h"
+#include "core/mesh/check_mesh.h"
+#include "core/mesh/pin_vertices.h"
+#include "core/pipeline/find_structural_defects.h"
+#include "core/quality/worse_than.h"
 #include "core/quality/quality_stats.h"
 #include "core/util/error.h"
 #include "core/util/thread_count.h"
@@ -181,6 +186,40 @@ std::vector<std::string> methods_for_dim(int dim) {
   return out;
 }
 
+namespace {
+
+bool rebuilds_tetrahedralization(const std::string& method) {
+  return method.rfind("cvdt", 0) == 0;
+}
+
+std::vector<char> moved_or_new(const TetMesh& before, const TetMesh& after) {
+  std::vector<char> which(after.nb_vertices(), 1);
+  for (int v = 0; v < after.nb_vertices() && v < before.nb_vertices(); ++v)
+    which[v] = before.xyz[3 * v] != after.xyz[3 * v] ||
+               before.xyz[3 * v + 1] != after.xyz[3 * v + 1] ||
+               before.xyz[3 * v + 2] != after.xyz[3 * v + 2];
+  return which;
+}
+
+// Runs `method` on a copy of `input` (pinned vertices fixed), rounds what moved as it will be
+// written, restores the classes, verifies. Returns the mesh, or throws.
+TetMesh run_method3(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
+                    OptimizeResult& r) {
+  TetMesh mesh = input;
+  pin_vertices(mesh);
+  methods3().at(method)(mesh, o, r);
+  unpin_vertices(mesh);
+  // Vertices may have been renumbered: round every coordinate (the input's are already rounded).
+  if (o.output_digits > 0) round_coordinates(mesh.xyz, o.output_digits);
+  if (const int bad = last_non_positive_tet(mesh); bad >= 0)
+    throw InvariantError("tet " + std::to_string(bad) + " is flat or inverted once its coordinates"
+                         " are rounded to " + std::to_string(o.output_digits) + " digits");
+  if (o.verify) verify_optimized(input, mesh);
+  return mesh;
+}
+
+}  // namespace
+
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
   // Our thread count for the parallel loops (Gmsh may have set the process's to 1), the caller's
   // back on return.
@@ -192,18 +231,95 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
     if (it == methods3().end()) throw std::invalid_argument("unknown 3D method '" + o.method + "'");
     if (o.hops > 0)
       throw std::invalid_argument("basin hopping (--hops) is a 2D option; this mesh is 3D");
+    r.method = o.method;
+    long nb_kept = 0;
+    for (const ElementBlock& b : data.tet.model.extra)
+      if (b.dim >= 2) nb_kept += static_cast<long>(b.tags.size());
+    if (nb_kept)
+      r.notes.push_back(std::to_string(nb_kept) +
+                        " elements other than tets and their boundary triangles (surfaces bounding "
+                        "no volume, quadrangles, prisms, pyramids, hexahedra) kept unchanged, "
+                        "their vertices fixed");
+    if (data.tet.nb_tets() == 0) {
+      r.notes.push_back("no tetrahedra: nothing to optimize, the mesh is written unchanged");
+      r.kept_input = true;
+      r.converged = true;
+      r.before = r.after = quality_stats(data.tet, "before");
+      return r;
+    }
+    if (o.output_digits > 0) round_coordinates(data.tet.xyz, o.output_digits);
+    if (last_non_positive_tet(data.tet) >= 0)
+      throw InputError("the mesh has tets that are flat once their coordinates are rounded to " +
+                       std::to_string(o.output_digits) + " digits (nearly flat input elements)");
     r.before = quality_stats(data.tet, "before");
     const TetMesh input = data.tet;
-    it->second(data.tet, o, r);
-    if (o.verify) verify_optimized(input, data.tet);
-    r.after = quality_stats(data.tet, o.method);
-    r.method = o.method;
+    std::string method = o.method;
+    if (rebuilds_tetrahedralization(method)) {
+      const StructuralDefects defects = find_structural_defects(input, o.coincident_tolerance);
+      if (!defects.empty()) {
+        std::string what;
+        for (const auto& line : defects.describe(input)) what += (what.empty() ? "" : "; ") + line;
+        r.notes.push_back("the tetrahedralization cannot be rebuilt (" + what +
+                          "): local operations only (method 'smooth' instead of '" + method +
+                          "')");
+        method = "smooth";
+      }
+    }
+    std::string failure;
+    try {
+      data.tet = run_method3(input, method, o, r);
+      if (o.never_worse) {
+        const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
+        if (!worse.empty()) failure = "'" + method + "' made the mesh worse (" + worse + ")";
+      }
+    } catch (const InvariantError& e) {
+      if (!o.never_worse) throw;
+      failure = "'" + method + "' failed (" + e.what() + ")";
+    }
+    if (!failure.empty()) {
+      r.notes.push_back(failure);
+      data.tet = input;
+      bool polished = false;
+      if (method != "smooth") {
+        try {
+          OptimizeResult p;
+          TetMesh m = run_method3(input, "smooth", o, p);
+          const std::string worse = worse_than(quality_stats(m, ""), r.before);
+          if (worse.empty()) {
+            data.tet = std::move(m);
+            polished = true;
+            r.method = "smooth";
+            r.notes.push_back("the polish alone ('smooth') on the input is kept instead");
+          }
+        } catch (const InvariantError&) {
+        }
+      }
+      if (!polished) {
+        r.kept_input = true;
+        r.notes.push_back("the input is kept unchanged");
+      }
+    } else {
+      r.method = method;
+    }
+    r.after = quality_stats(data.tet, r.method);
   } else {
     // 2D: the default 3D method name maps to the 2D CVT.
     OptimizeOptions o2 = o;
     if (o2.method == "cvdt+swap+smooth") o2.method = "cvdt";
+    const TriMesh2 input = data.tri;
     OptimizeResult r2 = optimize_2d(data.tri, o2);
     r2.method = o2.method;
+    if (o.never_worse) {
+      const std::string worse = worse_than(r2.after, r2.before);
+      if (!worse.empty()) {
+        r2.notes.push_back("'" + o2.method + "' made the mesh worse (" + worse +
+                           "): the input is kept unchanged");
+        data.tri = input;
+        r2.kept_input = true;
+        r2.after = r2.before;
+        r2.after.label = o2.method;
+      }
+    }
     return r2;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

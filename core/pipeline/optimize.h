@@ -70,6 +70,20 @@ struct OptimizeOptions {
   bool polish_repair = true;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
+  // Never worse than the input: if the method's result has a lower Q_min or minimum angle
+  // (dihedral in 3D), a higher maximum angle, or fails to finish (a failure of the Delaunay
+  // rebuild), the polish alone (local, guarded operations: "smooth") is tried on the input, and
+  // if that is worse too the input is returned unchanged. OptimizeResult::notes says which.
+  bool never_worse = true;
+  // Coordinates are verified as a text writer stores them: every vertex rounded to this many
+  // significant digits before and after the optimization (16: Gmsh's ASCII .msh; our writers
+  // use 17). 0 = no rounding.
+  int output_digits = 16;
+  // Before a method that rebuilds the tetrahedralization (cvdt*: TetGen), the boundary is
+  // checked for self-intersections and coincident nodes (find_structural_defects.h); with
+  // defects the local operations alone run ("smooth") and the notes say where the defect is.
+  // Nodes closer than this fraction of the bounding-box diagonal count as coincident.
+  double coincident_tolerance = 1e-8;
   std::function<void(const OptimizeProgress&)> progress;
 };
 
@@ -82,6 +96,11 @@ struct OptimizeResult {
   // 3D Lloyd phase: the energy before each iteration's move, and where its time went.
   std::vector<double> lloyd_energy;
   double seconds_lloyd = 0;
+  // What optimize() did besides the method: a fallback to local operations (structural
+  // defects), the input kept where the method would have made it worse, elements kept
+  // unchanged, ... One sentence each, for the summary.
+  std::vector<std::string> notes;
+  bool kept_input = false;  // the input is returned unchanged (see notes)
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces
