@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/delaunay/component_seeds.h"
 #include "core/delaunay/delaunay3.h"
 #include "core/delaunay/tetgen_library.h"
 #include "core/geometry/predicates.h"
@@ -20,34 +21,13 @@
 namespace cvtmesh {
 namespace {
 
-// One interior point per region: the centroid of a tet of that region (strictly inside it, and
-// region boundaries are constrained faces that do not move).
-std::map<int, std::array<double, 3>> region_seeds(const TetMesh& m) {
-  std::map<int, std::array<double, 3>> seeds;
-  std::map<int, double> best;
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] < 0) continue;
-    // Prefer a fat tet: a seed near a face of a flat tet is fragile.
-    const double vol = orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
-    const int r = m.tet_region[t];
-    if (best.count(r) && best[r] >= vol) continue;
-    best[r] = vol;
-    std::array<double, 3> c{0, 0, 0};
-    for (int k = 0; k < 4; ++k)
-      for (int d = 0; d < 3; ++d) c[d] += 0.25 * m.point(v[k])[d];
-    seeds[r] = c;
-  }
-  return seeds;
-}
-
 class TetgenDelaunay3 final : public Delaunay3 {
  public:
   std::string name() const override { return "tetgen"; }
 
   Delaunay3Stats retetrahedralize(TetMesh& m) override {
     Delaunay3Stats stats;
-    const auto seeds = region_seeds(m);
+    const auto seeds = component_seeds(m);
     const int nv = m.nb_vertices();
 
     // Only the vertices a tet or a constrained triangle uses: a node no element uses (a meshed

@@ -44,6 +44,13 @@ int type_order(int type) {
   return order;
 }
 
+// For a high-order element: what to do instead.
+std::string order_hint(int type) {
+  if (type_order(type) <= 1) return "";
+  return "; for a high-order mesh, optimize its order-1 mesh (gmsh -order 1, or "
+         "Mesh.ElementOrder = 1) and raise the order afterwards (gmsh -order N)";
+}
+
 std::string check_summary(const MeshCheck& c) {
   std::string s;
   for (std::size_t i = 0; i < c.problems.size() && i < 3; ++i) s += (i ? "; " : "") + c.problems[i];
@@ -87,6 +94,19 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         for (const auto& [bd, bt] : b) e.boundary.push_back(bt);
       }
       info.entities.push_back(e);
+    }
+    // Periodic links (entity and node correspondences), kept by node tag.
+    for (const auto& [d, t] : ents) {
+      PeriodicLink l;
+      l.dim = d;
+      l.tag = t;
+      try {
+        gmsh::model::mesh::getPeriodicNodes(d, t, l.master, l.node_tags, l.master_node_tags,
+                                            l.affine, false);
+      } catch (...) {
+        continue;
+      }
+      if (l.master != t && !l.node_tags.empty()) info.periodic.push_back(std::move(l));
     }
     gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups);
@@ -168,12 +188,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
                              (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
                              " (cvtmesh optimizes linear " +
                              (dim == 3 ? "tetrahedra" : "triangles") + " only" +
-                             (type_order(type) > 1
-                                  ? "; for a high-order mesh, optimize its order-1 mesh (gmsh "
-                                    "-order 1, or Mesh.ElementOrder = 1) and raise the order "
-                                    "afterwards (gmsh -order N)"
-                                  : "") +
-                             ")");
+                             (type == 3 ? "; mesh the surface without Recombine for triangles"
+                                        : "") +
+                             order_hint(type) + ")");
           const int npe = dim + 1;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) cells.push_back(vid(nd[npe * e + j]));
@@ -185,7 +202,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           if (type != want)
             throw InputError(what + ": unsupported element type '" + type_name(type) + "' on " +
                              (dim == 3 ? "surface " : "curve ") + std::to_string(t) +
-                             " (expected linear " + (dim == 3 ? "triangles" : "lines") + ")");
+                             " (expected linear " + (dim == 3 ? "triangles" : "lines") + ")" +
+                             order_hint(type));
           const int npe = dim;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) facets.push_back(vid(nd[npe * e + j]));
@@ -194,7 +212,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           }
         } else if (d < dim - 1) {
           throw InputError(what + ": unsupported element type '" + type_name(type) +
-                           "' on entity (" + std::to_string(d) + "," + std::to_string(t) + ")");
+                           "' on entity (" + std::to_string(d) + "," + std::to_string(t) + ")" +
+                           order_hint(type));
         } else {
           throw InputError(what + ": has " + std::to_string(d) + "D elements ('" + type_name(type) +
                            "') but is read as a " + std::to_string(dim) + "D mesh");
@@ -243,8 +262,30 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       // Planarity: every node of the 2D mesh at the same z (relative tolerance).
       const ZRange zr = z_range(xyz);
       const double zmin = zr.zmin, zmax = zr.zmax;
+      // The surfaces that leave the plane of the first one, named in the message.
+      std::string off_plane;
+      if (!zr.planar) {
+        std::map<int, std::vector<int>> by_surface;
+        for (std::size_t e = 0; e < cell_entity.size(); ++e)
+          for (int k = 0; k < 3; ++k) by_surface[cell_entity[e]].push_back(cells[3 * e + k]);
+        double z0 = 0;
+        bool first = true;
+        int listed = 0;
+        for (const auto& [srf, ids] : by_surface) {
+          const ZRange r = z_range(xyz, &ids);
+          if (first) z0 = r.zmin;
+          first = false;
+          std::vector<double> two = {0, 0, z0, 0, 0, r.zmin, 0, 0, r.zmax};
+          if (!r.planar || !z_range(two).planar) {
+            if (listed++ < 8) off_plane += (off_plane.empty() ? "" : ", ") + std::to_string(srf);
+          }
+        }
+        if (listed > 8) off_plane += ", ...";
+      }
       if (!zr.planar)
-        throw InputError(what + ": the triangle mesh is not planar (z varies from " +
+        throw InputError(what + ": the triangle mesh is not planar" +
+                         (off_plane.empty() ? "" : " (surfaces " + off_plane + " leave the plane of the first surface)") +
+                         " (z varies from " +
                          std::to_string(zmin) + " to " + std::to_string(zmax) +
                          "); 2D optimization needs a mesh in a plane z = const");
       m.z0 = n ? zmin : 0;

@@ -192,15 +192,6 @@ bool rebuilds_tetrahedralization(const std::string& method) {
   return method.rfind("cvdt", 0) == 0;
 }
 
-std::vector<char> moved_or_new(const TetMesh& before, const TetMesh& after) {
-  std::vector<char> which(after.nb_vertices(), 1);
-  for (int v = 0; v < after.nb_vertices() && v < before.nb_vertices(); ++v)
-    which[v] = before.xyz[3 * v] != after.xyz[3 * v] ||
-               before.xyz[3 * v + 1] != after.xyz[3 * v + 1] ||
-               before.xyz[3 * v + 2] != after.xyz[3 * v + 2];
-  return which;
-}
-
 // Runs `method` on a copy of `input` (pinned vertices fixed), rounds what moved as it will be
 // written, restores the classes, verifies. Returns the mesh, or throws.
 TetMesh run_method3(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
@@ -247,10 +238,21 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
       r.before = r.after = quality_stats(data.tet, "before");
       return r;
     }
-    if (o.output_digits > 0) round_coordinates(data.tet.xyz, o.output_digits);
-    if (last_non_positive_tet(data.tet) >= 0)
-      throw InputError("the mesh has tets that are flat once their coordinates are rounded to " +
-                       std::to_string(o.output_digits) + " digits (nearly flat input elements)");
+    // The input as a 16-digit writer stores it (what Gmsh writes of a model it meshed), unless
+    // that flattens one of its own tets: then full precision (a binary .msh keeps it).
+    OptimizeOptions oo = o;
+    if (o.output_digits > 0) {
+      TetMesh rounded = data.tet;
+      round_coordinates(rounded.xyz, o.output_digits);
+      if (last_non_positive_tet(rounded) < 0) {
+        data.tet = std::move(rounded);
+      } else {
+        oo.output_digits = 0;
+        r.notes.push_back("the input has tets that are flat once its coordinates are rounded to " +
+                          std::to_string(o.output_digits) +
+                          " digits: verified in full precision (write a binary .msh)");
+      }
+    }
     r.before = quality_stats(data.tet, "before");
     const TetMesh input = data.tet;
     std::string method = o.method;
@@ -267,7 +269,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
     }
     std::string failure;
     try {
-      data.tet = run_method3(input, method, o, r);
+      data.tet = run_method3(input, method, oo, r);
       if (o.never_worse) {
         const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
         if (!worse.empty()) failure = "'" + method + "' made the mesh worse (" + worse + ")";
@@ -283,7 +285,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
       if (method != "smooth") {
         try {
           OptimizeResult p;
-          TetMesh m = run_method3(input, "smooth", o, p);
+          TetMesh m = run_method3(input, "smooth", oo, p);
           const std::string worse = worse_than(quality_stats(m, ""), r.before);
           if (worse.empty()) {
             data.tet = std::move(m);
