@@ -284,7 +284,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       }
       if (!zr.planar)
         throw InputError(what + ": the triangle mesh is not planar" +
-                         (off_plane.empty() ? "" : " (surfaces " + off_plane + " leave the plane of the first surface)") +
+                         (off_plane.empty() ? "" : " (surfaces " + off_plane + " are not in the plane z = const of the first surface)") +
                          " (z varies from " +
                          std::to_string(zmin) + " to " + std::to_string(zmax) +
                          "); 2D optimization needs a mesh in a plane z = const");
