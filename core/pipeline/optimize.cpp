@@ -291,6 +291,8 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
             data.tet = std::move(m);
             polished = true;
             r.method = "smooth";
+            r.iterations = p.iterations;
+            r.converged = p.converged;
             r.notes.push_back("the polish alone ('smooth') on the input is kept instead");
           }
         } catch (const InvariantError&) {
