@@ -88,6 +88,21 @@ for m in "${all[@]}"; do
       if "$CVTMESH" check "$out" >"$work/$tag.chk" 2>&1; then chk=ok; else chk="check-rc$?"; fi
       "$CVTMESH" stats "$out" --format json >"$work/$tag.json" 2>/dev/null
       read -r oq oa od <<<"$(stats_of "$work/$tag.json")"
+      # What optimize kept or fell back to (its notes), in a few words.
+      kept=$(python3 -c '
+import re,sys
+t=open(sys.argv[1]).read(); out=[]
+m=re.search(r"note: (\d+) elements other than tets", t)
+if m: out.append(m.group(1)+" non-tet kept")
+if "local operations only" in t: out.append("defects: local ops only")
+m=re.search(r"made the mesh worse \(([^)]*)\)", t)
+if m: out.append("method worse ("+m.group(1)+")")
+if "failed (" in t: out.append("method failed")
+if "polish alone" in t: out.append("polish kept")
+if "input is kept unchanged" in t: out.append("input kept")
+if "iteration cap" in t: out.append("iteration cap")
+print("; ".join(out))' "$work/$tag.err")
+      [ -n "$kept" ] && chk="$chk; $kept"
     else
       chk=$(grep -v '^\s*$' "$work/$tag.err" | tail -1 | cut -c1-150)
     fi

@@ -9,7 +9,9 @@ namespace cvtmesh {
 
 void append_msh_periodic(const std::string& path, const std::vector<PeriodicLink>& links,
                          double msh_version, bool binary) {
-  if (links.empty()) return;
+  // MSH 2.2: Gmsh 4.8 did not read back a section appended after $Elements (its own writer puts
+  // it before $Nodes); not written there (documented loss).
+  if (links.empty() || msh_version < 3) return;
   std::ofstream f(path, std::ios::binary | std::ios::app);
   if (!f) throw OutputError("cannot write '" + path + "': cannot append the $Periodic section");
   auto text = [&](const std::string& s) { f.write(s.data(), static_cast<std::streamsize>(s.size())); };

@@ -1,6 +1,7 @@
 // Gmsh 4.8's API can declare periodic entities but not their node correspondences, so the
 // $Periodic section of a written .msh is appended by us: after Gmsh's $Elements, in the file's
-// version (4.1 or 2.2) and mode (ASCII or binary 4.1), from ModelInfo::periodic (node tags).
+// mode (ASCII or binary 4.1), from ModelInfo::periodic (node tags). Not in MSH 2.2 (Gmsh did not
+// read it back there).
 #pragma once
 #include <string>
 #include <vector>

@@ -192,19 +192,31 @@ bool rebuilds_tetrahedralization(const std::string& method) {
   return method.rfind("cvdt", 0) == 0;
 }
 
-// Runs `method` on a copy of `input` (pinned vertices fixed), rounds what moved as it will be
-// written, restores the classes, verifies. Returns the mesh, or throws.
+// Runs `method` on a copy of `input` (pinned vertices fixed), rounds the free vertices to what
+// a text writer stores, restores the classes, verifies (on the coordinates as they will be read
+// back: every tet must stay positive once all of them are rounded). Returns the mesh, or throws.
 TetMesh run_method3(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
                     OptimizeResult& r) {
   TetMesh mesh = input;
   pin_vertices(mesh);
   methods3().at(method)(mesh, o, r);
+  if (o.output_digits > 0) {
+    // Free (moved or new) vertices only: the fixed ones stay exactly as they came.
+    std::vector<char> free(mesh.nb_vertices(), 0);
+    for (int v = 0; v < mesh.nb_vertices(); ++v) free[v] = mesh.vclass[v].dim == 3;
+    round_coordinates(mesh.xyz, o.output_digits, free);
+  }
   unpin_vertices(mesh);
-  // Vertices may have been renumbered: round every coordinate (the input's are already rounded).
-  if (o.output_digits > 0) round_coordinates(mesh.xyz, o.output_digits);
   if (const int bad = last_non_positive_tet(mesh); bad >= 0)
-    throw InvariantError("tet " + std::to_string(bad) + " is flat or inverted once its coordinates"
-                         " are rounded to " + std::to_string(o.output_digits) + " digits");
+    throw InvariantError("tet " + std::to_string(bad) + " is flat or inverted");
+  if (o.output_digits > 0) {
+    TetMesh written = mesh;
+    round_coordinates(written.xyz, o.output_digits);
+    if (const int bad = last_non_positive_tet(written); bad >= 0)
+      throw InvariantError("tet " + std::to_string(bad) +
+                           " is flat or inverted once its coordinates are written with " +
+                           std::to_string(o.output_digits) + " digits");
+  }
   if (o.verify) verify_optimized(input, mesh);
   return mesh;
 }
@@ -238,15 +250,13 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
       r.before = r.after = quality_stats(data.tet, "before");
       return r;
     }
-    // The input as a 16-digit writer stores it (what Gmsh writes of a model it meshed), unless
-    // that flattens one of its own tets: then full precision (a binary .msh keeps it).
+    // If the input itself has tets that a 16-digit writer flattens, the output is verified in
+    // full precision (a binary .msh keeps it).
     OptimizeOptions oo = o;
     if (o.output_digits > 0) {
       TetMesh rounded = data.tet;
       round_coordinates(rounded.xyz, o.output_digits);
-      if (last_non_positive_tet(rounded) < 0) {
-        data.tet = std::move(rounded);
-      } else {
+      if (last_non_positive_tet(rounded) >= 0) {
         oo.output_digits = 0;
         r.notes.push_back("the input has tets that are flat once its coordinates are rounded to " +
                           std::to_string(o.output_digits) +

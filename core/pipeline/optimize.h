@@ -75,9 +75,9 @@ struct OptimizeOptions {
   // rebuild), the polish alone (local, guarded operations: "smooth") is tried on the input, and
   // if that is worse too the input is returned unchanged. OptimizeResult::notes says which.
   bool never_worse = true;
-  // Coordinates are verified as a text writer stores them: every vertex rounded to this many
-  // significant digits before and after the optimization (16: Gmsh's ASCII .msh; our writers
-  // use 17). 0 = no rounding.
+  // Coordinates are verified as a text writer stores them: the moved and new vertices are rounded
+  // to this many significant digits, and every tet must stay positive with all coordinates
+  // rounded (16: Gmsh's ASCII .msh; our writers use 17). 0 = full precision.
   int output_digits = 16;
   // Before a method that rebuilds the tetrahedralization (cvdt*: TetGen), the boundary is
   // checked for self-intersections and coincident nodes (find_structural_defects.h); with
