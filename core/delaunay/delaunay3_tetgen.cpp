@@ -13,6 +13,7 @@
 
 #include "core/delaunay/component_seeds.h"
 #include "core/delaunay/delaunay3.h"
+#include "core/delaunay/tetgen_error.h"
 #include "core/delaunay/tetgen_library.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
@@ -86,8 +87,7 @@ class TetgenDelaunay3 final : public Delaunay3 {
     try {
       tetgen_library().tetrahedralize(switches, &in, &out, nullptr, nullptr);
     } catch (int code) {
-      throw InvariantError("TetGen failed to recover the boundary (error code " +
-                           std::to_string(code) + ")");
+      throw InvariantError("TetGen failed to recover the boundary: " + tetgen_error(code));
     }
     if (out.numberofpoints < np)
       throw InvariantError("TetGen lost input points (" + std::to_string(np - out.numberofpoints) +
