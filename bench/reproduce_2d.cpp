@@ -18,6 +18,9 @@
 #include <map>
 #include <string>
 
+#include "convert/schema_cli.h"
+#include "core/pipeline/option_schema.h"
+#include "core/util/error.h"
 #include "core/cvt/lloyd_optimize_2d.h"
 #include "core/io/read_mesh.h"
 #include "core/io/svg_io.h"
@@ -88,33 +91,40 @@ int main(int argc, char** argv) {
   int quad_n = 12;
   double h0 = 0.08, g = 0.08, r0 = 1.0, r1 = 2.5;
   unsigned seed = 1;
-  int max_it = 5000;
-  double tol = 1e-10;
+  // The CVT knobs are the option schema's (core/pipeline/option_schema.h) with this driver's
+  // reproduction settings: the paper's plain Lloyd step, run far (5000 iterations, D < 1e-10),
+  // basin-hopping seed 1 (--hop-seed; --seed is RandPert's here).
+  OptimizeOptions cvt;
+  apply_preset("plain (paper)", cvt);
+  cvt.max_iterations = 5000;
+  cvt.tolerance = 1e-10;
+  cvt.seed = 1;
   app.add_option("--out", out_dir, "directory for the SVG pictures (none if empty)");
   app.add_option("--quad-n", quad_n, "quad: divisions per side (geo/quad.geo n)");
   app.add_option("--washer-h0", h0, "washer: size at the inner circle (geo/washer.geo h0)");
   app.add_option("--washer-g", g, "washer: size gradient (geo/washer.geo g)");
   app.add_option("--seed", seed, "RandPert seed");
-  app.add_option("--max-iterations", max_it, "iteration cap of DL, WDL and Lloyd");
-  app.add_option("--tolerance", tol, "stop on the normalised D (core/cvt/lloyd.h)");
   std::vector<std::string> methods = {"dl", "wdl", "cvt"}, examples = {"quad", "washer"};
   app.add_option("--methods", methods, "methods to run (dl, wdl, cvt)");
   app.add_option("--examples", examples, "examples to run (quad, washer)");
   app.add_option("--washer-r1", r1, "washer: outer radius (geo/washer.geo r1)");
-  double rand_amount = -1, clus_amount = -1, relaxation = 1;
-  int anderson = 0, hops = 0, lbfgs = 0;
-  app.add_option("--lbfgs", lbfgs, "CVT: L-BFGS on the energy with this memory (0 = Lloyd)");
-  double hop_amount = 0.3;
-  unsigned hop_seed = 1;
-  app.add_option("--hops", hops, "CVT: basin-hopping trials after Lloyd (0 = the paper's Lloyd)");
-  app.add_option("--hop-amount", hop_amount, "CVT: basin-hopping kick radius, in units of h");
-  app.add_option("--hop-seed", hop_seed, "CVT: basin-hopping random seed");
-  app.add_option("--relaxation", relaxation, "Lloyd over-relaxation (1 = the paper's Lloyd)");
-  app.add_option("--anderson", anderson,
-                 "Lloyd Anderson acceleration depth (0 = the paper's Lloyd)");
+  double rand_amount = -1, clus_amount = -1;
+  cli::add_schema_options(&app, cvt,
+                          {"method", "seed", "sizing", "swap_below", "polish_flip_below",
+                           "polish_q_floor", "polish_maxmin", "polish_repair"});
+  app.add_option("--hop-seed", cvt.seed, "CVT: basin-hopping random seed (default 1)");
   app.add_option("--random-amount", rand_amount, "RandPert amount (default: perturb_2d's)");
   app.add_option("--cluster-amount", clus_amount, "ClusPert amount (default: perturb_2d's)");
   CLI11_PARSE(app, argc, argv);
+  try {
+    validate(cvt, 2);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "reproduce_2d: %s\n", e.what());
+    return 2;
+  }
+  const OptimizeOptions o2 = resolve(cvt, 2);
+  const int max_it = o2.max_iterations;
+  const double tol = o2.tolerance;
   auto wanted = [](const std::vector<std::string>& v, const std::string& x) {
     return std::find(v.begin(), v.end(), x) != v.end();
   };
@@ -186,12 +196,12 @@ int main(int argc, char** argv) {
           lr = lloyd_optimize_2d(r.mesh,
                                  {.lloyd = loop,
                                   .sizing = e.sizing,
-                                  .relaxation = relaxation,
-                                  .anderson_depth = anderson,
-                                  .lbfgs_memory = lbfgs,
-                                  .hops = hops,
-                                  .hop_amount = hop_amount,
-                                  .hop_seed = hop_seed},
+                                  .relaxation = o2.relaxation,
+                                  .anderson_depth = o2.anderson_depth,
+                                  .lbfgs_memory = o2.lbfgs_memory,
+                                  .hops = o2.hops,
+                                  .hop_amount = o2.hop_amount,
+                                  .hop_seed = o2.seed},
                                  nullptr, &r.report);
         } else {
           Smooth2dOptions so;
@@ -215,7 +225,7 @@ int main(int argc, char** argv) {
         const std::string up = std::string(method) == "cvt"  ? "CVT"
                                : std::string(method) == "dl" ? "DL"
                                                              : "WDL";
-        const bool hopped = std::string(method) == "cvt" && hops > 0;
+        const bool hopped = std::string(method) == "cvt" && o2.hops > 0;
         svg(r.mesh, e.name + "_" + method + (hopped ? "_hops_" : "_") + p,
             e.title + ": " + up + (hopped ? " + basin hopping" : "") + " from " +
                 (std::string(p) == "randpert" ? "RandPert" : "ClusPert"));

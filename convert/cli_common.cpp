@@ -1,6 +1,7 @@
 #include "convert/cli_common.h"
 
 #include "core/io/read_msh_format.h"
+#include "core/quality/quality_fields.h"
 
 namespace cvtmesh::cli {
 

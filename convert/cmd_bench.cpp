@@ -16,9 +16,10 @@
 #include <vector>
 
 #include "convert/cli_common.h"
+#include "convert/schema_cli.h"
 #include "core/delaunay/delaunay3.h"
-#include "core/delaunay/tetgen_optimize.h"
-#include "core/io/gmsh_optimizer.h"
+#include "bench/baselines/tetgen_optimize.h"
+#include "bench/baselines/gmsh_optimizer.h"
 #include "core/pipeline/optimize.h"
 #include "core/util/error.h"
 
@@ -156,8 +157,7 @@ void register_bench(CLI::App& app) {
   c->add_flag("--plain-lloyd", bo->plain,
               "also plain Lloyd (the paper's step), and how many iterations of L-BFGS (the "
               "default) and of Anderson-accelerated Lloyd reach its final energy");
-  c->add_option("--max-iterations", opt->max_iterations, "maximum Lloyd / outer iterations");
-  c->add_option("--tolerance", opt->tolerance, "Lloyd tolerance");
+  add_schema_options(c, *opt, {"method"});  // the schema's options (not --method)
   commands().push_back(
       {c, [bo, opt] {
          struct Input {

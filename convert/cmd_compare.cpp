@@ -8,8 +8,10 @@
 #include <utility>
 
 #include "convert/cli_common.h"
-#include "core/delaunay/tetgen_optimize.h"
-#include "core/io/gmsh_optimizer.h"
+#include "convert/schema_cli.h"
+#include "bench/baselines/tetgen_optimize.h"
+#include "bench/baselines/gmsh_optimizer.h"
+#include "core/quality/quality_fields.h"
 #include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/util/error.h"
@@ -17,7 +19,6 @@
 namespace cvtmesh::cli {
 
 ReadOptions init_read_options(const InputOpts& in);
-void add_method_options(CLI::App* c, OptimizeOptions& o);
 
 namespace {
 
@@ -82,7 +83,7 @@ void register_compare(CLI::App& app) {
                                    "CVDT+SWAP+smooth | Gmsh optimize | TetGen -q -O) on "
                                    "the same Init");
   add_input(c, *in);
-  add_method_options(c, *opt);
+  add_schema_options(c, *opt);
   c->add_option("--format", co->format, "text, markdown or json")
       ->check(CLI::IsMember({"text", "markdown", "json"}));
   c->add_option("--save", co->save_dir,

@@ -1,55 +1,14 @@
-// cvtmesh optimize IN -o OUT --method cvdt+swap+smooth|cvdt+swap|cvdt|combined|swap (3D),
-// cvdt|dl|wdl (2D).
+// cvtmesh optimize IN -o OUT [--method M] [the options of core/pipeline/option_schema.h].
 #include <cstdio>
 #include <iostream>
 #include <memory>
 
 #include "convert/cli_common.h"
+#include "convert/schema_cli.h"
+#include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
 
 namespace cvtmesh::cli {
-
-void add_method_options(CLI::App* c, OptimizeOptions& o) {
-  c->add_option(
-      "--method,-m", o.method,
-      "cvdt+swap+smooth (default), cvdt+swap, cvdt, combined, swap (3D); cvdt, dl, wdl (2D)");
-  c->add_option("--max-iterations", o.max_iterations, "maximum Lloyd / outer iterations")
-      ->check(CLI::NonNegativeNumber);
-  c->add_option("--tolerance", o.tolerance, "stop when the mean squared move / h^2 is below this")
-      ->check(CLI::NonNegativeNumber);
-  c->add_option("--sizing", o.sizing,
-                "sizing field for the density: mesh (input's local edge length) or uniform")
-      ->check(CLI::IsMember({"mesh", "uniform"}));
-  c->add_option("--relaxation", o.relaxation,
-                "Lloyd over-relaxation omega in (0,2); 1 = plain Lloyd")
-      ->check(CLI::Range(0.05, 1.95));
-  c->add_option("--swap-below", o.swap_below,
-                "SWAP tries only tets with Q below this (default: all tets)");
-  c->add_option("--polish-flip-below", o.polish_flip_below,
-                "the polish flips only tets with a dihedral angle below this many degrees "
-                "(default 45; inf: all tets)");
-  c->add_flag("!--no-polish-maxmin", o.polish_maxmin,
-              "the polish without the max-min smoothing of the poor tets' vertices");
-  c->add_flag("!--no-polish-repair", o.polish_repair,
-              "the polish without the final repair of its slivers (vertex insertion, flips "
-              "with local smoothing)");
-  c->add_option("--anderson", o.anderson_depth,
-                "Anderson acceleration depth for Lloyd (0 = plain Lloyd)")
-      ->check(CLI::Range(0, 20));
-  c->add_option("--lbfgs", o.lbfgs_memory,
-                "CVT: minimise the CVT energy by L-BFGS with this memory instead of Lloyd's step; "
-                "0 = Lloyd's step (with --relaxation/--anderson); default: 5 in 3D, 0 in 2D. "
-                "The paper's plain Lloyd: --lbfgs 0 --anderson 0 --relaxation 1")
-      ->check(CLI::Range(0, 50));
-  c->add_option("--hops", o.hops,
-                "2D CVT: basin-hopping trials after Lloyd converges (0 = off): kick every free "
-                "vertex randomly, re-run Lloyd, keep the mesh of lowest CVT energy")
-      ->check(CLI::Range(0, 100000));
-  c->add_option("--hop-amount", o.hop_amount,
-                "2D CVT: basin-hopping kick radius, in units of the local size h")
-      ->check(CLI::Range(0.01, 1.0));
-  c->add_option("--seed", o.seed, "random seed (methods that use randomness, --hops)");
-}
 
 void register_optimize(CLI::App& app) {
   auto in = std::make_shared<InputOpts>();
@@ -62,7 +21,7 @@ void register_optimize(CLI::App& app) {
   add_input(c, *in);
   c->add_option("-o,--output", out->path, "output file (format by extension)")->required();
   add_output_flags(c, *out);
-  add_method_options(c, *opt);
+  add_schema_options(c, *opt);
   c->add_flag("-q,--quiet", *quiet, "no progress on stderr");
   c->add_flag("--strict", *strict,
               "exit with code 6 (after writing the output) when the method stopped at the "
@@ -72,6 +31,7 @@ void register_optimize(CLI::App& app) {
               "input's (default: fall back to the polish alone, or keep the input)");
   commands().push_back(
       {c, [in, out, opt, quiet, strict] {
+         validate(*opt, 0);  // a bad value fails before the (possibly long) read
          MeshData d = read_mesh(in->path, in->to_read_options());
          // A bad output location fails now, not after the optimization.
          check_can_write(out->path, out->to_write_options(d, in->path));

@@ -10,7 +10,7 @@
 #include <mutex>
 #include <string>
 
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 #include "core/io/read_mesh.h"
 
 // Exported by libtet (Shewchuk's predicates.cxx) but not declared in tetgen.h.
@@ -35,7 +35,7 @@ const TetgenLibrary& tetgen_library() {
     lib.orient3d = &::orient3d;
     lib.incircle = &::incircle;
     lib.insphere = &::insphere;
-    ::exactinit(0, 0, 1, 1.0, 1.0, 1.0);  // as core/delaunay/tetgen_library.cpp
+    ::exactinit(0, 0, 1, 1.0, 1.0, 1.0);  // as core/geometry/tetgen_library.cpp
   });
   return lib;
 }

@@ -15,8 +15,8 @@
 #include <thread>
 #include <vector>
 
-#include "core/io/gmsh_gui.h"
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_gui.h"
+#include "plugin/gmsh_inprocess.h"
 #include "plugin/panel.h"
 
 namespace {

@@ -13,7 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_inprocess.h"
+#include "core/quality/quality_fields.h"
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/pipeline/optimize.h"

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "core/io/gmsh_gui.h"
+#include "plugin/gmsh_gui.h"
 
 namespace cvtmesh::plugin {
 

@@ -4,24 +4,33 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
 #include "core/util/error.h"
 
 namespace cvtmesh::plugin {
 namespace {
 
-const std::string kMethod = kGroup + "/0Method";
-const std::string kIterations = kGroup + "/1Max iterations";
-const std::string kTolerance = kGroup + "/2Tolerance";
+// The inputs come from the option schema (core/pipeline/option_schema.h: the options with a panel
+// label) and its Lloyd-step presets; only the quality-views switch is the panel's own.
+const OptionSpec& spec(const char* name) {
+  return *find_option(name);
+}
+std::string param_name(const OptionSpec& s) {
+  return kGroup + "/" + s.panel;
+}
+const std::string kMethod = param_name(spec("method"));
 const std::string kStep = kGroup + "/2Lloyd step";  // sorts before Tolerance
-// The Lloyd step: the dimension's default (L-BFGS in 3D, Anderson in 2D), L-BFGS on the CVT
-// energy, over-relaxed Lloyd with Anderson mixing, or the paper's plain step.
-const std::vector<std::string> kSteps = {"default", "L-BFGS", "Anderson", "plain (paper)"};
-const std::string kSizing = kGroup + "/3Sizing";
 const std::string kViews = kGroup + "/4Quality views";
 const std::string kDim = kGroup + "/dim";
 const std::string kResults = kGroup + "/9Results/";
-const std::vector<std::string> kSizings = {"mesh", "uniform"};
+// The sizings a panel user can pick (the schema's, but "function" needs a C++ size function).
+std::vector<std::string> panel_sizings() {
+  std::vector<std::string> v;
+  for (const auto& c : spec("sizing").choices)
+    if (c != "function") v.push_back(c);
+  return v;
+}
 
 OnelabParam input(const std::string& name, double value, const std::string& help) {
   OnelabParam p;
@@ -62,9 +71,9 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   const std::vector<std::string> all = all_methods();
   const std::vector<std::string> here = methods_for_dim(dim);
 
-  OnelabParam method = input(
-      kMethod, 0,
-      "Du & Wang's methods for " + std::to_string(dim) + "D meshes (cvdt: Lloyd CVT + Delaunay)");
+  OnelabParam method = input(kMethod, 0,
+                             "Du & Wang's methods for " + std::to_string(dim) + "D meshes:\n" +
+                                 methods_help(dim));
   for (const auto& m : here) {
     const auto code = std::find(all.begin(), all.end(), m) - all.begin();
     method.choices.push_back(static_cast<double>(code));
@@ -84,48 +93,45 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   method.attributes.clear();  // Highlight colours a drop-down's text, not its background
   tree.set(method);
 
-  OnelabParam it =
-      input(kIterations, OptimizeOptions{}.max_iterations, "Lloyd / outer iterations at most");
-  it.min = 1;
-  it.max = 1000;
-  it.step = 1;
-  if (auto cur = tree.number(kIterations)) it.number = *cur;
-  if (preset.max_iterations >= 0) it.number = preset.max_iterations;
-  tree.set(it);
+  // The numeric options with a panel label, their range from the schema.
+  for (const OptionSpec& s : option_schema()) {
+    if (s.panel.empty() || s.name == "method" || s.name == "sizing") continue;
+    if (!(s.dims & (dim == 2 ? kDim2 : kDim3))) continue;
+    OnelabParam p = input(param_name(s), value_number(s, OptimizeOptions{}), describe(s));
+    if (std::isfinite(s.min)) p.min = s.min;
+    if (std::isfinite(s.max)) p.max = s.max;
+    if (!std::holds_alternative<double OptimizeOptions::*>(s.field)) p.step = 1;
+    if (auto cur = tree.number(p.name)) p.number = *cur;
+    if (s.name == "max_iterations" && preset.max_iterations >= 0) p.number = preset.max_iterations;
+    if (s.name == "tolerance" && preset.tolerance >= 0) p.number = preset.tolerance;
+    tree.set(p);
+  }
 
-  OnelabParam tol = input(kTolerance, OptimizeOptions{}.tolerance,
-                          "Lloyd stops when the mean squared relative move D is below this");
-  if (auto cur = tree.number(kTolerance)) tol.number = *cur;
-  if (preset.tolerance >= 0) tol.number = preset.tolerance;
-  tree.set(tol);
-
-  OnelabParam step = input(kStep, 0,
-                           "CVT (Lloyd) step: default = L-BFGS in 3D, Anderson in 2D; L-BFGS = "
-                           "quasi-Newton on the CVT energy (fewest iterations); Anderson = "
-                           "over-relaxed Lloyd with Anderson mixing; plain = the paper's step");
-  for (std::size_t i = 0; i < kSteps.size(); ++i) {
+  std::string step_help = "CVT (Lloyd) step:";
+  for (const OptionPreset& p : lloyd_step_presets()) step_help += " " + p.name + " = " + p.help + ";";
+  OnelabParam step = input(kStep, 0, step_help);
+  for (std::size_t i = 0; i < lloyd_step_presets().size(); ++i) {
     step.choices.push_back(static_cast<double>(i));
-    step.labels.push_back(kSteps[i]);
+    step.labels.push_back(lloyd_step_presets()[i].name);
   }
   if (auto cur = tree.number(kStep)) step.number = *cur;
   step.attributes.clear();
   tree.set(step);
 
-  OnelabParam sizing = input(kSizing, 0,
-                             "Density: mesh = keep the input's local edge length (grading), "
-                             "uniform = constant size");
-  for (std::size_t i = 0; i < kSizings.size(); ++i) {
+  const std::vector<std::string> sizings = panel_sizings();
+  OnelabParam sizing = input(param_name(spec("sizing")), 0, describe(spec("sizing")));
+  for (std::size_t i = 0; i < sizings.size(); ++i) {
     sizing.choices.push_back(static_cast<double>(i));
-    sizing.labels.push_back(kSizings[i]);
+    sizing.labels.push_back(sizings[i]);
   }
-  if (auto cur = tree.number(kSizing)) sizing.number = *cur;
+  if (auto cur = tree.number(sizing.name)) sizing.number = *cur;
   sizing.attributes.clear();
   if (!preset.sizing.empty()) {
-    const auto k = std::find(kSizings.begin(), kSizings.end(), preset.sizing);
-    if (k == kSizings.end())
+    const auto k = std::find(sizings.begin(), sizings.end(), preset.sizing);
+    if (k == sizings.end())
       throw InputError("sizing '" + preset.sizing +
-                       "' is not offered (available: " + join(kSizings) + ")");
-    sizing.number = static_cast<double>(k - kSizings.begin());
+                       "' is not offered (available: " + join(sizings) + ")");
+    sizing.number = static_cast<double>(k - sizings.begin());
   }
   tree.set(sizing);
 
@@ -170,29 +176,20 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
   if (code < 0 || code >= static_cast<double>(all.size()) || code != std::floor(code))
     throw InputError("unknown method (value " + std::to_string(code) + ") in the panel");
   o.optimize.method = all[static_cast<std::size_t>(code)];
-  o.optimize.max_iterations =
-      std::max(1, static_cast<int>(std::lround(tree.number(kIterations).value_or(100))));
-  o.optimize.tolerance = tree.number(kTolerance).value_or(o.optimize.tolerance);
-  if (!(o.optimize.tolerance >= 0)) throw InputError("the tolerance must be a number >= 0");
-  const auto s = static_cast<std::size_t>(std::lround(tree.number(kSizing).value_or(0)));
-  o.optimize.sizing = kSizings[std::min(s, kSizings.size() - 1)];
-  o.quality_views = tree.number(kViews).value_or(1) != 0;
-  switch (std::lround(tree.number(kStep).value_or(0))) {
-    case 1:
-      o.optimize.lbfgs_memory = 5;
-      break;
-    case 2:
-      o.optimize.lbfgs_memory = 0;
-      break;
-    case 3:
-      o.optimize.lbfgs_memory = 0;
-      o.optimize.anderson_depth = 0;
-      o.optimize.relaxation = 1.0;
-      break;
-    default:
-      break;
+  // The Lloyd step preset first, then the numeric inputs, each set and checked by the schema.
+  const auto step = static_cast<std::size_t>(std::lround(tree.number(kStep).value_or(0)));
+  apply_preset(lloyd_step_presets()[std::min(step, lloyd_step_presets().size() - 1)].name,
+               o.optimize);
+  for (const OptionSpec& s : option_schema()) {
+    if (s.panel.empty() || s.name == "method" || s.name == "sizing") continue;
+    if (auto v = tree.number(param_name(s))) set_number(s, o.optimize, *v);
   }
+  const std::vector<std::string> sizings = panel_sizings();
+  const auto k = static_cast<std::size_t>(std::lround(tree.number(param_name(spec("sizing"))).value_or(0)));
+  o.optimize.sizing = sizings[std::min(k, sizings.size() - 1)];
+  o.quality_views = tree.number(kViews).value_or(1) != 0;
   o.dim = dim ? dim : -1;
+  validate(o.optimize, dim);  // the same refusal as the CLI and Python, before any work starts
   return o;
 }
 

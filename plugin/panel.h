@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/io/gmsh_gui.h"
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_gui.h"
+#include "plugin/gmsh_inprocess.h"
 
 namespace cvtmesh::plugin {
 

@@ -6,14 +6,15 @@
 //   gmsh.initialize(); gmsh.open("cube_sphere.geo"); gmsh.model.mesh.generate(3)
 //   table = cvtmesh.optimize(method="cvdt+swap", quality_views=True)
 //
-// Thin: argument conversion over core/io/gmsh_inprocess.h; C++ errors become Python exceptions
+// Thin: argument conversion over plugin/gmsh_inprocess.h; C++ errors become Python exceptions
 // (cvtmesh.InputError is a ValueError).
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_inprocess.h"
 #include "core/io/gmsh_session.h"
+#include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
 #include "core/util/error.h"
 
@@ -26,50 +27,70 @@ py::object json_loads(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
-// The Lloyd acceleration and minimiser knobs of OptimizeOptions.
-struct Acceleration {
-  int anderson = OptimizeOptions{}.anderson_depth;
-  int lbfgs = OptimizeOptions{}.lbfgs_memory;
-  int hops = OptimizeOptions{}.hops;
-  double hop_amount = OptimizeOptions{}.hop_amount;
-};
 
-GmshOptimizeOptions options_from(const std::string& method, int max_iterations, double tolerance,
-                                 double relaxation, const Acceleration& acc,
-                                 const std::string& sizing, unsigned seed, int dim,
-                                 bool quality_views, bool generate, const py::object& progress) {
+// The options given as keyword arguments, set by the option schema (core/pipeline/option_schema.h):
+// names, types and defaults come from there, and optimize() validates the values, so a bad one is
+// refused with the same OptionError (cvtmesh.InputError) as on the CLI and in the GUI panel.
+GmshOptimizeOptions options_from(const py::kwargs& kwargs) {
   GmshOptimizeOptions o;
-  o.optimize.method = method;
-  o.optimize.max_iterations = max_iterations;
-  o.optimize.tolerance = tolerance;
-  o.optimize.relaxation = relaxation;
-  if (acc.anderson < 0 || acc.lbfgs < -1 || acc.hops < 0 || !(acc.hop_amount > 0))
-    throw py::value_error(
-        "anderson and hops must be >= 0, lbfgs >= 0 (or -1: the default), hop_amount > 0");
-  o.optimize.anderson_depth = acc.anderson;
-  o.optimize.lbfgs_memory = acc.lbfgs;
-  o.optimize.hops = acc.hops;
-  o.optimize.hop_amount = acc.hop_amount;
-  o.optimize.sizing = sizing;
-  o.optimize.seed = seed;
-  o.dim = dim;
-  o.quality_views = quality_views;
-  o.generate = generate;
-  if (!progress.is_none()) {
-    if (!PyCallable_Check(progress.ptr()))
-      throw py::type_error("progress must be callable or None");
-    o.optimize.progress = [progress](const OptimizeProgress& p) {
-      py::dict d;
-      d["phase"] = p.phase;
-      d["iteration"] = p.iteration;
-      d["D"] = p.D;
-      d["energy"] = p.energy;
-      d["q_min"] = p.q_min;
-      d["q_avg"] = p.q_avg;
-      progress(d);  // a Python exception raised here aborts the optimization, model unchanged
-    };
+  o.optimize.method = "";  // the dimension's default
+  for (const auto& [key, value] : kwargs) {
+    const std::string k = py::str(key);
+    if (k == "dim") {
+      o.dim = value.cast<int>();
+    } else if (k == "quality_views") {
+      o.quality_views = value.cast<bool>();
+    } else if (k == "generate") {
+      o.generate = value.cast<bool>();
+    } else if (k == "progress") {
+      if (value.is_none()) continue;
+      if (!PyCallable_Check(value.ptr())) throw py::type_error("progress must be callable or None");
+      py::object progress = py::reinterpret_borrow<py::object>(value);
+      o.optimize.progress = [progress](const OptimizeProgress& p) {
+        py::dict d;
+        d["phase"] = p.phase;
+        d["iteration"] = p.iteration;
+        d["D"] = p.D;
+        d["energy"] = p.energy;
+        d["q_min"] = p.q_min;
+        d["q_avg"] = p.q_avg;
+        progress(d);  // a Python exception raised here aborts the optimization, model unchanged
+      };
+    } else {
+      const OptionSpec* s = find_option(k);
+      if (!s || !(s->fronts & kPython) || s->name != k)
+        throw py::type_error("optimize() got an unexpected keyword argument '" + k + "'");
+      if (py::isinstance<py::str>(value))
+        set_text(*s, o.optimize, value.cast<std::string>());
+      else if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value) ||
+               py::isinstance<py::float_>(value))
+        set_number(*s, o.optimize, value.cast<double>());
+      else
+        throw py::type_error("optimize(): " + k + " must be a number, a bool or a string");
+    }
   }
   return o;
+}
+
+// The docstring of optimize(), from the schema and the method registry.
+std::string optimize_doc() {
+  std::string d =
+      "optimize(**options) -> dict\n\n"
+      "Optimizes the mesh of the current Gmsh model in place: every volume (3D) or every planar\n"
+      "surface (2D). Entities, physical groups and lower-dimensional elements stay.\n\n"
+      "Front-end arguments:\n"
+      "  dim: 2 or 3 (default -1: the highest meshed dimension)\n"
+      "  generate: mesh the model first if it has no mesh (default False)\n"
+      "  quality_views: add per-element views Q, radius ratio, min angle (default False)\n"
+      "  progress: called with a dict (phase, iteration, D, energy, q_min, q_avg)\n\n"
+      "Options (checked by the core; a bad value raises cvtmesh.InputError):\n";
+  for (const OptionSpec& s : option_schema())
+    if (s.fronts & kPython) d += "  " + s.name + ": " + describe(s) + "\n";
+  d += "\nMethods:\n" + methods_help();
+  d += "\nReturns the paper's table as a dict: method, dim, iterations, converged, seconds, views,\n"
+       "before and after (number_of_elements, Q bins, q_min, average_quality, bad/good %,\n"
+       "dihedral/planar angles, average_radius_ratio).";
+  return d;
 }
 
 }  // namespace
@@ -103,39 +124,31 @@ PYBIND11_MODULE(cvtmesh, m) {
       "methods", [](int dim) { return methods_for_dim(dim); }, py::arg("dim") = 3,
       "The optimization methods available for meshes of dimension dim (2 or 3), in menu order.");
 
+  static const std::string doc = optimize_doc();
   m.def(
       "optimize",
-      [](const std::string& method, int max_iterations, double tolerance, double relaxation,
-         int anderson, int lbfgs, int hops, double hop_amount, const std::string& sizing,
-         unsigned seed, int dim, bool quality_views, bool generate, const py::object& progress) {
-        const auto o = options_from(method, max_iterations, tolerance, relaxation,
-                                    Acceleration{anderson, lbfgs, hops, hop_amount}, sizing, seed,
-                                    dim, quality_views, generate, progress);
+      [](const py::kwargs& kwargs) {
+        const GmshOptimizeOptions o = options_from(kwargs);
         return json_loads(gmsh_optimize(o).to_json());
       },
-      py::kw_only(), py::arg("method") = "",
-      py::arg("max_iterations") = OptimizeOptions{}.max_iterations,
-      py::arg("tolerance") = OptimizeOptions{}.tolerance,
-      py::arg("relaxation") = OptimizeOptions{}.relaxation,
-      py::arg("anderson") = OptimizeOptions{}.anderson_depth,
-      py::arg("lbfgs") = OptimizeOptions{}.lbfgs_memory, py::arg("hops") = OptimizeOptions{}.hops,
-      py::arg("hop_amount") = OptimizeOptions{}.hop_amount,
-      py::arg("sizing") = OptimizeOptions{}.sizing, py::arg("seed") = 0u, py::arg("dim") = -1,
-      py::arg("quality_views") = false, py::arg("generate") = false,
-      py::arg("progress") = py::none(),
-      "Optimizes the mesh of the current Gmsh model in place: every volume (3D) or every planar\n"
-      "surface (2D) with method (one of methods(dim); '' = the first, the paper's best) —\n"
-      "dim=-1 picks the highest meshed dimension. Entities, physical groups and\n"
-      "lower-dimensional elements stay. relaxation: Lloyd over-relaxation in (0, 2); anderson:\n"
-      "Anderson depth; lbfgs: L-BFGS memory (minimise the CVT energy by L-BFGS instead of\n"
-      "Lloyd's step; 0 = Lloyd's step, -1 = default: 5 in 3D, 0 in 2D; the paper's plain Lloyd\n"
-      "is lbfgs=0, anderson=0, relaxation=1); hops, hop_amount: 2D basin hopping. generate=True "
-      "meshes the model first if it has no mesh;\n"
-      "quality_views=True adds per-element views (Q, radius ratio, min angle). progress, if\n"
-      "given, is called with a dict (phase, iteration, D, energy, q_min, q_avg).\n"
-      "Returns the paper's table as a dict: method, dim, iterations, converged, seconds, views,\n"
-      "before and after (number_of_elements, Q bins, q_min, average_quality, bad/good %,\n"
-      "dihedral/planar angles, average_radius_ratio).");
+      doc.c_str());
+
+  m.def(
+      "options",
+      [] {
+        py::list out;
+        for (const OptionSpec& s : option_schema()) {
+          if (!(s.fronts & kPython)) continue;
+          py::dict d;
+          d["name"] = s.name;
+          d["flag"] = s.flag;
+          d["default"] = value_text(s, OptimizeOptions{});
+          d["help"] = describe(s);
+          out.append(d);
+        }
+        return out;
+      },
+      "The options of optimize() (the option schema): name, CLI flag, default, help.");
 
   m.def(
       "quality",

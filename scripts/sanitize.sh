@@ -9,7 +9,7 @@
 #
 # TetGen (libtet) is loaded with dlopen(RTLD_DEEPBIND) to keep it apart from libgmsh's copy of
 # TetGen; ASan refuses that flag in its dlopen interceptor, so sanitizer builds call glibc's dlopen
-# directly (core/delaunay/tetgen_library.cpp). Arrays that TetGen allocates with operator new
+# directly (core/geometry/tetgen_library.cpp). Arrays that TetGen allocates with operator new
 # (through libstdc++ -> ASan's malloc) and we delete[] then look like a malloc/delete[] mismatch:
 # alloc_dealloc_mismatch=0. Leaks are checked, minus scripts/lsan.supp (libgmsh's globals and an
 # OpenMesh header leak). libgmsh, libtet and OpenMesh are not instrumented: errors inside them are

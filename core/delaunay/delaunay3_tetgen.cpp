@@ -14,7 +14,7 @@
 #include "core/delaunay/component_seeds.h"
 #include "core/delaunay/delaunay3.h"
 #include "core/delaunay/tetgen_error.h"
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/util/error.h"

@@ -1,6 +1,6 @@
 #include "core/geometry/predicates.h"
 
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 
 namespace cvtmesh {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 
 namespace cvtmesh {
 

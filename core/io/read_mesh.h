@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 
 namespace cvtmesh {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 
 namespace cvtmesh {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/io/atomic_file.h"
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 
 namespace cvtmesh {
 

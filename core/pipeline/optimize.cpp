@@ -8,6 +8,8 @@
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/pipeline/combined_optimize.h"
+#include "core/pipeline/methods3.h"
+#include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize2d.h"
 #include "core/pipeline/repair_slivers.h"
 #include "core/swap/swap_slivers.h"
@@ -53,6 +55,8 @@ void report(const OptimizeOptions& o, const std::string& phase, int it, double D
   o.progress(p);
 }
 
+}  // namespace
+
 // Lloyd to a CVDT (3D).
 void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   Lloyd3Options lo;
@@ -60,7 +64,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.lloyd.tolerance = o.tolerance;
   lo.relaxation = o.relaxation;
   lo.anderson_depth = o.anderson_depth;
-  lo.lbfgs_memory = o.lbfgs_memory < 0 ? 5 : o.lbfgs_memory;
+  lo.lbfgs_memory = o.lbfgs_memory;  // resolved: 5 for the default -1
   lo.sizing = sizing3(mesh, o);
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
@@ -139,20 +143,6 @@ void run_cvdt_swap_smooth3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResu
   r.iterations = lloyd_iterations;
 }
 
-using Method3 = void (*)(TetMesh&, const OptimizeOptions&, OptimizeResult&);
-const std::map<std::string, Method3>& methods3() {
-  static const std::map<std::string, Method3> m = {
-      {"cvdt", run_cvdt3},
-      {"cvdt+swap", run_cvdt_swap3},
-      {"cvdt+swap+smooth", run_cvdt_swap_smooth3},
-      {"swap", run_swap3},
-      {"combined", run_combined3},
-      {"smooth", run_polish3},
-  };
-  return m;
-}
-
-}  // namespace
 
 OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
                                 const QualityStats& q) {
@@ -176,16 +166,6 @@ OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
   return p;
 }
 
-std::vector<std::string> methods_for_dim(int dim) {
-  std::vector<std::string> out;
-  if (dim == 2) return methods_2d();
-  if (dim == 3) {
-    for (const char* name : {"cvdt+swap+smooth", "cvdt+swap", "cvdt", "combined", "swap", "smooth"})
-      if (methods3().count(name)) out.push_back(name);
-  }
-  return out;
-}
-
 namespace {
 
 bool rebuilds_tetrahedralization(const std::string& method) {
@@ -199,7 +179,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
                     OptimizeResult& r) {
   TetMesh mesh = input;
   pin_vertices(mesh);
-  methods3().at(method)(mesh, o, r);
+  find_method(method, 3)->run3(mesh, o, r);
   if (o.output_digits > 0) {
     // Free (moved or new) vertices only: the fixed ones stay exactly as they came.
     std::vector<char> free(mesh.nb_vertices(), 0);
@@ -221,121 +201,118 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   return mesh;
 }
 
+// 2D: optimize_2d, and the input kept if the result is worse.
+OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& options) {
+  const TriMesh2 input = mesh;
+  OptimizeResult r = optimize_2d(mesh, options);
+  if (options.never_worse) {
+    const std::string worse = worse_than(r.after, r.before);
+    if (!worse.empty()) {
+      r.notes.push_back("'" + r.method + "' made the mesh worse (" + worse +
+                        "): the input is kept unchanged");
+      mesh = input;
+      r.kept_input = true;
+      const std::string label = r.after.label;
+      r.after = r.before;
+      r.after.label = label;
+    }
+  }
+  return r;
+}
+
 }  // namespace
 
-OptimizeResult optimize(MeshData& data, const OptimizeOptions& o) {
+OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
+  // Every front end's values are checked here, against the one option schema.
+  validate(options, data.dim);
   // Our thread count for the parallel loops (Gmsh may have set the process's to 1), the caller's
   // back on return.
   const ThreadCountScope threads;
+  if (data.dim == 2) return optimize_2d_no_worse(data.tri, options);
+  const OptimizeOptions o = resolve(options, 3);
   OptimizeResult r;
   const auto t0 = std::chrono::steady_clock::now();
-  if (data.dim == 3) {
-    auto it = methods3().find(o.method);
-    if (it == methods3().end()) throw std::invalid_argument("unknown 3D method '" + o.method + "'");
-    if (o.hops > 0)
-      throw std::invalid_argument("basin hopping (--hops) is a 2D option; this mesh is 3D");
-    r.method = o.method;
-    long nb_kept = 0;
-    for (const ElementBlock& b : data.tet.model.extra)
-      if (b.dim >= 2) nb_kept += static_cast<long>(b.tags.size());
-    if (nb_kept)
-      r.notes.push_back(std::to_string(nb_kept) +
-                        " elements other than tets and their boundary triangles (surfaces bounding "
-                        "no volume, quadrangles, prisms, pyramids, hexahedra) kept unchanged, "
-                        "their vertices fixed");
-    if (data.tet.nb_tets() == 0) {
-      r.notes.push_back("no tetrahedra: nothing to optimize, the mesh is written unchanged");
-      r.kept_input = true;
-      r.converged = true;
-      r.before = r.after = quality_stats(data.tet, "before");
-      return r;
-    }
-    // If the input itself has tets that a 16-digit writer flattens, the output is verified in
-    // full precision (a binary .msh keeps it).
-    OptimizeOptions oo = o;
-    if (o.output_digits > 0) {
-      TetMesh rounded = data.tet;
-      round_coordinates(rounded.xyz, o.output_digits);
-      if (last_non_positive_tet(rounded) >= 0) {
-        oo.output_digits = 0;
-        r.notes.push_back("the input has tets that are flat once its coordinates are rounded to " +
-                          std::to_string(o.output_digits) +
-                          " digits: verified in full precision (write a binary .msh)");
-      }
-    }
-    r.before = quality_stats(data.tet, "before");
-    const TetMesh input = data.tet;
-    std::string method = o.method;
-    if (rebuilds_tetrahedralization(method)) {
-      const StructuralDefects defects = find_structural_defects(input, o.coincident_tolerance);
-      if (!defects.empty()) {
-        std::string what;
-        for (const auto& line : defects.describe(input)) what += (what.empty() ? "" : "; ") + line;
-        r.notes.push_back("the tetrahedralization cannot be rebuilt (" + what +
-                          "): local operations only (method 'smooth' instead of '" + method +
-                          "')");
-        method = "smooth";
-      }
-    }
-    std::string failure;
-    try {
-      data.tet = run_method3(input, method, oo, r);
-      if (o.never_worse) {
-        const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
-        if (!worse.empty()) failure = "'" + method + "' made the mesh worse (" + worse + ")";
-      }
-    } catch (const InvariantError& e) {
-      if (!o.never_worse) throw;
-      failure = "'" + method + "' failed (" + e.what() + ")";
-    }
-    if (!failure.empty()) {
-      r.notes.push_back(failure);
-      data.tet = input;
-      bool polished = false;
-      if (method != "smooth") {
-        try {
-          OptimizeResult p;
-          TetMesh m = run_method3(input, "smooth", oo, p);
-          const std::string worse = worse_than(quality_stats(m, ""), r.before);
-          if (worse.empty()) {
-            data.tet = std::move(m);
-            polished = true;
-            r.method = "smooth";
-            r.iterations = p.iterations;
-            r.converged = p.converged;
-            r.notes.push_back("the polish alone ('smooth') on the input is kept instead");
-          }
-        } catch (const InvariantError&) {
-        }
-      }
-      if (!polished) {
-        r.kept_input = true;
-        r.notes.push_back("the input is kept unchanged");
-      }
-    } else {
-      r.method = method;
-    }
-    r.after = quality_stats(data.tet, r.method);
-  } else {
-    // 2D: the default 3D method name maps to the 2D CVT.
-    OptimizeOptions o2 = o;
-    if (o2.method == "cvdt+swap+smooth") o2.method = "cvdt";
-    const TriMesh2 input = data.tri;
-    OptimizeResult r2 = optimize_2d(data.tri, o2);
-    r2.method = o2.method;
-    if (o.never_worse) {
-      const std::string worse = worse_than(r2.after, r2.before);
-      if (!worse.empty()) {
-        r2.notes.push_back("'" + o2.method + "' made the mesh worse (" + worse +
-                           "): the input is kept unchanged");
-        data.tri = input;
-        r2.kept_input = true;
-        r2.after = r2.before;
-        r2.after.label = o2.method;
-      }
-    }
-    return r2;
+  r.method = o.method;
+  long nb_kept = 0;
+  for (const ElementBlock& b : data.tet.model.extra)
+    if (b.dim >= 2) nb_kept += static_cast<long>(b.tags.size());
+  if (nb_kept)
+    r.notes.push_back(std::to_string(nb_kept) +
+                      " elements other than tets and their boundary triangles (surfaces bounding "
+                      "no volume, quadrangles, prisms, pyramids, hexahedra) kept unchanged, "
+                      "their vertices fixed");
+  if (data.tet.nb_tets() == 0) {
+    r.notes.push_back("no tetrahedra: nothing to optimize, the mesh is written unchanged");
+    r.kept_input = true;
+    r.converged = true;
+    r.before = r.after = quality_stats(data.tet, "before");
+    return r;
   }
+  // If the input itself has tets that a 16-digit writer flattens, the output is verified in
+  // full precision (a binary .msh keeps it).
+  OptimizeOptions oo = o;
+  if (o.output_digits > 0) {
+    TetMesh rounded = data.tet;
+    round_coordinates(rounded.xyz, o.output_digits);
+    if (last_non_positive_tet(rounded) >= 0) {
+      oo.output_digits = 0;
+      r.notes.push_back("the input has tets that are flat once its coordinates are rounded to " +
+                        std::to_string(o.output_digits) +
+                        " digits: verified in full precision (write a binary .msh)");
+    }
+  }
+  r.before = quality_stats(data.tet, "before");
+  const TetMesh input = data.tet;
+  std::string method = o.method;
+  if (rebuilds_tetrahedralization(method)) {
+    const StructuralDefects defects = find_structural_defects(input, o.coincident_tolerance);
+    if (!defects.empty()) {
+      std::string what;
+      for (const auto& line : defects.describe(input)) what += (what.empty() ? "" : "; ") + line;
+      r.notes.push_back("the tetrahedralization cannot be rebuilt (" + what +
+                        "): local operations only (method 'smooth' instead of '" + method + "')");
+      method = "smooth";
+    }
+  }
+  std::string failure;
+  try {
+    data.tet = run_method3(input, method, oo, r);
+    if (o.never_worse) {
+      const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
+      if (!worse.empty()) failure = "'" + method + "' made the mesh worse (" + worse + ")";
+    }
+  } catch (const InvariantError& e) {
+    if (!o.never_worse) throw;
+    failure = "'" + method + "' failed (" + e.what() + ")";
+  }
+  if (!failure.empty()) {
+    r.notes.push_back(failure);
+    data.tet = input;
+    bool polished = false;
+    if (method != "smooth") {
+      try {
+        OptimizeResult p;
+        TetMesh m = run_method3(input, "smooth", oo, p);
+        const std::string worse = worse_than(quality_stats(m, ""), r.before);
+        if (worse.empty()) {
+          data.tet = std::move(m);
+          polished = true;
+          r.method = "smooth";
+          r.iterations = p.iterations;
+          r.converged = p.converged;
+          r.notes.push_back("the polish alone ('smooth') on the input is kept instead");
+        }
+      } catch (const InvariantError&) {
+      }
+    }
+    if (!polished) {
+      r.kept_input = true;
+      r.notes.push_back("the input is kept unchanged");
+    }
+  } else {
+    r.method = method;
+  }
+  r.after = quality_stats(data.tet, r.method);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "core/cvt/lloyd.h"
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
+#include "core/pipeline/method_registry.h"
 #include "core/quality/quality_stats.h"
 
 namespace cvtmesh {
@@ -104,15 +105,14 @@ struct OptimizeResult {
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces
-// kept exactly). Throws std::invalid_argument for an unknown method or one that does not apply
-// to the mesh's dimension, InputError for a mesh it cannot handle, InvariantError on a bug.
+// kept exactly). The options are checked first against the option schema
+// (core/pipeline/option_schema.h: validate, then resolve): OptionError (an InputError) for a bad
+// value, an unknown method or one that does not apply to the mesh's dimension; InputError for a
+// mesh it cannot handle, InvariantError on a bug.
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& options);
 
 // The progress report of one Lloyd-type iteration (2D or 3D) in `phase`, with the mesh's quality q.
 OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
                                 const QualityStats& q);
-
-// The methods available for a dimension (2 or 3), in menu order.
-std::vector<std::string> methods_for_dim(int dim);
 
 }  // namespace cvtmesh

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/cvt/lloyd_optimize_2d.h"
+#include "core/pipeline/option_schema.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/smoothing/dl_optimize_2d.h"
 #include "core/smoothing/wdl_optimize_2d.h"
@@ -14,15 +15,10 @@
 
 namespace cvtmesh {
 
-std::vector<std::string> methods_2d() {
-  return {"cvdt", "cvdt+swap", "dl", "wdl"};
-}
-
-OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
+OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& given) {
+  validate(given, 2);
+  const OptimizeOptions options = resolve(given, 2);
   const std::string& method = options.method;
-  if (method != "cvdt" && method != "cvdt+swap" && method != "dl" && method != "wdl")
-    throw std::invalid_argument("method \"" + method +
-                                "\" does not apply to a 2D mesh (use cvdt, cvdt+swap, dl or wdl)");
   const auto t0 = std::chrono::steady_clock::now();
   OptimizeResult r;
   r.before = quality_stats(mesh, "before");
@@ -49,7 +45,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
     lo.sizing = sizing;
     lo.relaxation = options.relaxation;
     lo.anderson_depth = options.anderson_depth;
-    lo.lbfgs_memory = std::max(0, options.lbfgs_memory);
+    lo.lbfgs_memory = options.lbfgs_memory;  // resolved: 0 for the default -1
     lo.hops = options.hops;
     lo.hop_amount = options.hop_amount;
     lo.hop_seed = options.seed;
@@ -66,6 +62,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options) {
   r.iterations = lr.iterations;
   r.converged = lr.converged;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.method = method;
   return r;
 }
 

@@ -12,9 +12,6 @@
 
 namespace cvtmesh {
 
-// The 2D method names, in menu order.
-std::vector<std::string> methods_2d();
-
 // Optimizes mesh in place with options.method, options.max_iterations, options.tolerance (the
 // normalised D of core/cvt/lloyd.h), options.sizing ("mesh": the input's local edge length,
 // "uniform": rho = 1, "function": options.size_function), options.relaxation and
@@ -24,8 +21,8 @@ std::vector<std::string> methods_2d();
 // options.progress (phase "lloyd", "dl" or "wdl"; q_min/q_avg of the current mesh). With
 // options.verify the result is checked against the input (verify_optimized: valid, boundary
 // vertices and edges unchanged, areas kept). Fills before/after, iterations, converged, seconds.
-// Throws std::invalid_argument for a method that is not a 2D one, InputError for an invalid
-// mesh, InvariantError on a bug.
+// Validates and resolves the options first (option_schema.h): OptionError for a bad value or a
+// method that is not a 2D one; InputError for an invalid mesh, InvariantError on a bug.
 OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& options);
 
 }  // namespace cvtmesh

@@ -10,7 +10,7 @@
 #include "core/geometry/tet_geometry.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/build_adjacency.h"
-#include "core/mesh/local_mesh.h"
+#include "core/swap/local_mesh.h"
 #include "core/mesh/walk_vertex_star.h"
 #include "core/quality/quality.h"
 #include "core/swap/apply_swap.h"

@@ -11,7 +11,7 @@
 #include <iostream>
 #include <string>
 
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_inprocess.h"
 
 int main(int argc, char** argv) {
   const std::string model = argc > 1 ? argv[1] : CVTMESH_SOURCE_DIR "/geo/cube_sphere.geo";

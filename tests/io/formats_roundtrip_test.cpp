@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/quality/quality_fields.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/io/medit_io.h"
 #include "core/io/read_mesh.h"

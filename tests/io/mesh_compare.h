@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 
 namespace cvtmesh::testing {
 

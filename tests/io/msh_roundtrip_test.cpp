@@ -8,7 +8,8 @@
 #include <fstream>
 #include <set>
 
-#include "core/io/mesh_data.h"
+#include "core/quality/quality_fields.h"
+#include "core/mesh/mesh_data.h"
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/mesh/check_mesh.h"

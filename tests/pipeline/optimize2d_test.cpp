@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/pipeline/option_schema.h"
 #include "core/io/read_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/optimize2d.h"
@@ -143,7 +144,7 @@ TEST(Optimize2d, RejectsA3dMethod) {
   TriMesh2 m = testing::square2();
   OptimizeOptions o;
   o.method = "combined";
-  EXPECT_THROW(optimize_2d(m, o), std::invalid_argument);
+  EXPECT_THROW(optimize_2d(m, o), OptionError);
 }
 
 // cvdt with basin hopping: the progress goes through "lloyd", then "hop 1", "hop 2" in order,

@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "core/pipeline/option_schema.h"
 #include "core/io/read_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/optimize.h"
@@ -49,9 +50,9 @@ TEST(Optimize3d, UnknownMethodAndWrongDimensionAreRefused) {
   MeshData d = two_region_cube_sphere();
   OptimizeOptions o;
   o.method = "dl";  // a 2D method
-  EXPECT_THROW(optimize(d, o), std::invalid_argument);
+  EXPECT_THROW(optimize(d, o), OptionError);
   o.method = "nonsense";
-  EXPECT_THROW(optimize(d, o), std::invalid_argument);
+  EXPECT_THROW(optimize(d, o), OptionError);
   const auto m3 = methods_for_dim(3);
   EXPECT_EQ(m3.front(), "cvdt+swap+smooth");
   EXPECT_NE(std::find(m3.begin(), m3.end(), "combined"), m3.end());

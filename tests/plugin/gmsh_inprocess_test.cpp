@@ -12,7 +12,8 @@
 #include <tuple>
 #include <vector>
 
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_inprocess.h"
+#include "core/pipeline/option_schema.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/pipeline/optimize.h"
@@ -205,7 +206,7 @@ TEST_F(GmshInProcess, UnknownMethodLeavesTheModelUnchanged) {
   const auto before = nodes(3);
   GmshOptimizeOptions o;
   o.optimize.method = "no-such-method";
-  EXPECT_THROW(gmsh_optimize(o), std::invalid_argument);
+  EXPECT_THROW(gmsh_optimize(o), OptionError);
   EXPECT_EQ(nodes(3), before);
 }
 

@@ -149,6 +149,34 @@ class InProcessScripting(unittest.TestCase):
             cvtmesh.optimize(method="cvdt", lbfgs=-2)
         self.assertEqual(nodes(2), boundary)
 
+    def test_a_bad_option_is_refused_with_the_cli_message(self):
+        # The option schema is checked in the core: Python, the CLI and the GUI panel refuse the
+        # same value with the same message (the panel: tests/plugin/frontend_options_test.cpp).
+        cli = os.environ.get("CVTMESH_CLI")
+        if not cli:
+            self.skipTest("CVTMESH_CLI not set")
+        before = nodes(3)
+        with self.assertRaises(cvtmesh.InputError) as e:
+            cvtmesh.optimize(relaxation=-2.0)
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "out.msh")
+            run = subprocess.run([cli, "optimize", os.path.join(SOURCE_DIR, "geo", "cube_sphere.geo"),
+                                  "-o", out, "--relaxation", "-2"], capture_output=True, text=True)
+            self.assertEqual(run.returncode, 2, run.stderr)
+            self.assertFalse(os.path.exists(out))
+        self.assertIn(str(e.exception), run.stderr)
+        self.assertIn("relaxation (--relaxation)", str(e.exception))
+        self.assertEqual(nodes(3), before)
+        for bad in ({"max_iterations": -3}, {"tolerance": -1.0}, {"max_iterations": 2.5},
+                    {"sizing": "fancy"}):
+            with self.assertRaises(cvtmesh.InputError, msg=str(bad)):
+                cvtmesh.optimize(**bad)
+        with self.assertRaises(TypeError):
+            cvtmesh.optimize(no_such_option=1)
+        names = [o["name"] for o in cvtmesh.options()]
+        self.assertIn("relaxation", names)
+        self.assertIn("relaxation", cvtmesh.optimize.__doc__)
+
     def test_errors_are_exceptions_and_leave_the_model_alone(self):
         before = nodes(3)
         with self.assertRaises(ValueError):

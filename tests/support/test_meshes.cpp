@@ -139,7 +139,7 @@ TriMesh2 square2() {
 
 #include <tetgen.h>
 
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 
 namespace cvtmesh::testing {
 

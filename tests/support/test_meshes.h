@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/mesh/tri_mesh2.h"
 

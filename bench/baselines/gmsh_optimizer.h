@@ -2,7 +2,7 @@
 #pragma once
 #include <string>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 
 namespace cvtmesh {
 

@@ -1,4 +1,4 @@
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 
 #include <dlfcn.h>
 

@@ -24,7 +24,4 @@ struct ElementField {
   std::vector<double> values;
 };
 
-// The quality fields written with --quality: Q, radius ratio, min dihedral (3D) / min angle (2D).
-std::vector<ElementField> quality_fields(const MeshData& data);
-
 }  // namespace cvtmesh

@@ -1,4 +1,4 @@
-#include "core/io/mesh_data.h"
+#include "core/quality/quality_fields.h"
 
 #include "core/quality/quality_stats.h"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/mesh_data.h"
+#include "core/mesh/mesh_data.h"
 #include "core/pipeline/optimize.h"
 #include "core/quality/quality_table.h"
 

@@ -1,4 +1,4 @@
-#include "core/io/gmsh_optimizer.h"
+#include "bench/baselines/gmsh_optimizer.h"
 
 #include <gmsh.h>
 #include <unistd.h>

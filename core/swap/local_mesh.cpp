@@ -1,4 +1,4 @@
-#include "core/mesh/local_mesh.h"
+#include "core/swap/local_mesh.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "core/io/gmsh_gui.h"
+#include "plugin/gmsh_gui.h"
 
 #include <gmsh.h>
 

@@ -1,12 +1,14 @@
-#include "core/io/gmsh_inprocess.h"
+#include "plugin/gmsh_inprocess.h"
 
 #include <gmsh.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "core/quality/quality_fields.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
+#include "core/pipeline/option_schema.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -120,15 +122,11 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
 }
 
 GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
+  // Bad values are refused before the model is read (optimize() checks again for the dimension).
+  validate(options.optimize, options.dim == 2 || options.dim == 3 ? options.dim : 0);
   MeshData data = gmsh_read_current(options);
   GmshOptimizeOptions o = options;
-  if (o.optimize.method.empty()) {
-    const auto methods = methods_for_dim(data.dim);
-    if (methods.empty())
-      throw InputError("no optimization method is available for " + std::to_string(data.dim) +
-                       "D meshes in this build");
-    o.optimize.method = methods.front();
-  }
+  o.optimize = resolve(o.optimize, data.dim);
   const OptimizeResult r = optimize(data, o.optimize);
   return gmsh_write_back(data, r, o);
 }

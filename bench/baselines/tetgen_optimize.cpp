@@ -1,4 +1,4 @@
-#include "core/delaunay/tetgen_optimize.h"
+#include "bench/baselines/tetgen_optimize.h"
 
 #include <tetgen.h>
 
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/delaunay/tetgen_library.h"
+#include "core/geometry/tetgen_library.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/util/error.h"

@@ -1,0 +1,327 @@
+#include "core/pipeline/option_schema.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "core/pipeline/method_registry.h"
+#include "core/pipeline/optimize.h"
+
+namespace cvtmesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+OptionSpec number(std::string name, std::string flag, OptionField f, double lo, double hi,
+                  std::string help, int dims = kDim23, int fronts = kCli | kPython) {
+  OptionSpec s;
+  s.name = std::move(name);
+  s.flag = std::move(flag);
+  s.field = f;
+  s.min = lo;
+  s.max = hi;
+  s.help = std::move(help);
+  s.dims = dims;
+  s.fronts = fronts;
+  return s;
+}
+
+OptionSpec boolean(std::string name, std::string flag, bool OptimizeOptions::*f, std::string help,
+                   int dims = kDim23, int fronts = kCli | kPython) {
+  OptionSpec s = number(std::move(name), std::move(flag), f, 0, 1, std::move(help), dims, fronts);
+  return s;
+}
+
+std::vector<OptionSpec> make_schema() {
+  using O = OptimizeOptions;
+  std::vector<OptionSpec> v;
+  {
+    OptionSpec s;
+    s.name = "method";
+    s.flag = "--method";
+    s.panel = "0Method";
+    s.field = &O::method;
+    s.fronts = kAllFronts;
+    s.help = "the optimization method (one of the registry's for the mesh's dimension; '' = "
+             "the dimension's default)";
+    v.push_back(s);
+  }
+  {
+    OptionSpec s = number("max_iterations", "--max-iterations", &O::max_iterations, 0, 1e6,
+                          "maximum Lloyd / outer iterations", kDim23, kAllFronts);
+    s.panel = "1Max iterations";
+    v.push_back(s);
+  }
+  {
+    OptionSpec s = number("tolerance", "--tolerance", &O::tolerance, 0, kInf,
+                          "Lloyd stops when the mean squared relative move D is below this",
+                          kDim23, kAllFronts);
+    s.panel = "2Tolerance";
+    v.push_back(s);
+  }
+  {
+    OptionSpec s;
+    s.name = "sizing";
+    s.flag = "--sizing";
+    s.panel = "3Sizing";
+    s.field = &O::sizing;
+    s.fronts = kAllFronts;
+    s.choices = {"mesh", "uniform", "function"};
+    s.help = "sizing field H of the density 1/H^(d+2): mesh (the input's local edge length, "
+             "keeps its grading), uniform, or function (C++: size_function)";
+    v.push_back(s);
+  }
+  v.push_back(number("relaxation", "--relaxation", &O::relaxation, 0.05, 1.95,
+                     "Lloyd over-relaxation omega (1 = the paper's plain step; also scales "
+                     "L-BFGS's initial inverse Hessian)"));
+  v.push_back(number("anderson", "--anderson", &O::anderson_depth, 0, 20,
+                     "Anderson acceleration depth of Lloyd's step (0 = plain Lloyd)"));
+  {
+    OptionSpec s = number("lbfgs", "--lbfgs", &O::lbfgs_memory, 0, 50,
+                          "minimise the CVT energy by L-BFGS with this memory instead of Lloyd's "
+                          "step (0 = Lloyd's step with relaxation/anderson; -1 = the dimension's "
+                          "default: 5 in 3D, 0 in 2D). The paper's plain Lloyd: lbfgs 0, "
+                          "anderson 0, relaxation 1");
+    s.special = -1;
+    s.has_special = true;
+    v.push_back(s);
+  }
+  v.push_back(number("hops", "--hops", &O::hops, 0, 100000,
+                     "basin-hopping trials after Lloyd converges (0 = off): kick every free "
+                     "vertex randomly, re-run Lloyd, keep the mesh of lowest CVT energy",
+                     kDim2));
+  v.push_back(number("hop_amount", "--hop-amount", &O::hop_amount, 0.01, 1.0,
+                     "basin-hopping kick radius, in units of the local size h", kDim2));
+  v.push_back(number("seed", "--seed", &O::seed, 0, 4294967295.0,
+                     "random seed (methods that use randomness: hops)"));
+  v.push_back(number("swap_below", "--swap-below", &O::swap_below, 0, kInf,
+                     "SWAP tries only the tets whose Q is below this (inf: all tets)", kDim3));
+  v.push_back(number("polish_flip_below", "--polish-flip-below", &O::polish_flip_below, 0, kInf,
+                     "the polish's dihedral flips try only tets with a dihedral angle below this "
+                     "many degrees (inf: all tets)",
+                     kDim3));
+  v.push_back(number("polish_q_floor", "--polish-q-floor", &O::polish_q_floor, 0, 1,
+                     "the polish's dihedral flips never lower a tet's Q below min(its old "
+                     "minimum, this floor)",
+                     kDim3));
+  v.push_back(boolean("polish_maxmin", "--no-polish-maxmin", &O::polish_maxmin,
+                      "the polish's max-min smoothing of the poor tets' vertices (the flag "
+                      "turns it off)",
+                      kDim3));
+  v.push_back(boolean("polish_repair", "--no-polish-repair", &O::polish_repair,
+                      "the polish's final repair of its slivers: vertex insertion or flips with "
+                      "local smoothing, kept where the local minimum rises (the flag turns it "
+                      "off)",
+                      kDim3));
+  v.push_back(boolean("verify", "", &O::verify,
+                      "check the invariants of the result against the input (InvariantError)",
+                      kDim23, 0));
+  return v;
+}
+
+std::string fmt(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  if (std::isnan(x)) return "nan";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.10g", x);
+  return b;
+}
+
+bool is_string(const OptionSpec& s) {
+  return std::holds_alternative<std::string OptimizeOptions::*>(s.field);
+}
+bool is_bool(const OptionSpec& s) {
+  return std::holds_alternative<bool OptimizeOptions::*>(s.field);
+}
+bool is_integral(const OptionSpec& s) {
+  return std::holds_alternative<int OptimizeOptions::*>(s.field) ||
+         std::holds_alternative<unsigned OptimizeOptions::*>(s.field);
+}
+
+std::string range_text(const OptionSpec& s) {
+  if (is_bool(s)) return "true or false";
+  if (is_string(s)) {
+    std::string c;
+    for (const auto& x : s.choices) c += (c.empty() ? "" : ", ") + x;
+    return "one of " + c;
+  }
+  std::string r = (is_integral(s) ? "an integer in [" : "a number in [") + fmt(s.min) + ", " +
+                  fmt(s.max) + "]";
+  if (s.has_special) r += " or " + fmt(s.special) + " (default)";
+  return r;
+}
+
+[[noreturn]] void refuse(const OptionSpec& s, const std::string& value, const std::string& why) {
+  std::string where = s.name;
+  if (!s.flag.empty()) where += " (" + s.flag + ")";
+  throw OptionError(s.name, value, "invalid value " + value + " for option " + where + ": " + why);
+}
+
+}  // namespace
+
+const std::vector<OptionSpec>& option_schema() {
+  static const std::vector<OptionSpec> schema = make_schema();
+  return schema;
+}
+
+const OptionSpec* find_option(std::string_view name) {
+  for (const OptionSpec& s : option_schema())
+    if (s.name == name || (!s.flag.empty() && s.flag == name)) return &s;
+  return nullptr;
+}
+
+double value_number(const OptionSpec& s, const OptimizeOptions& o) {
+  return std::visit(
+      [&](auto f) -> double {
+        using T = std::decay_t<decltype(o.*f)>;
+        if constexpr (std::is_same_v<T, std::string>)
+          throw std::logic_error("option " + s.name + " is not a number");
+        else
+          return static_cast<double>(o.*f);
+      },
+      s.field);
+}
+
+std::string value_text(const OptionSpec& s, const OptimizeOptions& o) {
+  if (is_string(s)) return o.*std::get<std::string OptimizeOptions::*>(s.field);
+  if (is_bool(s)) return o.*std::get<bool OptimizeOptions::*>(s.field) ? "true" : "false";
+  return fmt(value_number(s, o));
+}
+
+bool is_default(const OptionSpec& s, const OptimizeOptions& o) {
+  return value_text(s, o) == value_text(s, OptimizeOptions{});
+}
+
+void set_number(const OptionSpec& s, OptimizeOptions& o, double v) {
+  std::visit(
+      [&](auto f) {
+        using T = std::decay_t<decltype(o.*f)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          refuse(s, fmt(v), "expected " + range_text(s));
+        } else if constexpr (std::is_same_v<T, bool>) {
+          if (v != 0 && v != 1) refuse(s, fmt(v), "expected true or false (1 or 0)");
+          o.*f = v != 0;
+        } else if constexpr (std::is_integral_v<T>) {
+          // Whole numbers only, and within the type (the range check comes in validate).
+          if (!(v == std::floor(v)) || v < static_cast<double>(std::numeric_limits<T>::min()) ||
+              v > static_cast<double>(std::numeric_limits<T>::max()))
+            refuse(s, fmt(v), "expected " + range_text(s));
+          o.*f = static_cast<T>(v);
+        } else {
+          o.*f = v;
+        }
+      },
+      s.field);
+}
+
+void set_text(const OptionSpec& s, OptimizeOptions& o, const std::string& v) {
+  if (is_string(s)) {
+    o.*std::get<std::string OptimizeOptions::*>(s.field) = v;
+    return;
+  }
+  if (is_bool(s)) {
+    if (v == "true" || v == "1") return set_number(s, o, 1);
+    if (v == "false" || v == "0") return set_number(s, o, 0);
+    refuse(s, "'" + v + "'", "expected true or false");
+  }
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(v, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != v.size()) refuse(s, "'" + v + "'", "expected " + range_text(s));
+  set_number(s, o, x);
+}
+
+std::string describe(const OptionSpec& s) {
+  std::string d = s.help + " (default ";
+  const std::string def = value_text(s, OptimizeOptions{});
+  if (s.name == "method")
+    d += default_method(3) + " in 3D, " + default_method(2) + " in 2D";
+  else if (s.has_special && def == fmt(s.special))
+    d += def + ": the dimension's default";
+  else
+    d += def.empty() ? "''" : def;
+  if (!is_bool(s) && s.name != "method") d += "; " + range_text(s);
+  if (s.dims != kDim23) d += s.dims == kDim2 ? "; 2D only" : "; 3D only";
+  return d + ")";
+}
+
+void validate(const OptimizeOptions& o, int dim) {
+  for (const OptionSpec& s : option_schema()) {
+    if (s.name == "method") {
+      const std::string& m = o.method;
+      if (m.empty() || m == default_method(3)) continue;  // the default of either dimension
+      const int dims[] = {2, 3};
+      bool known = false;
+      for (int d : dims)
+        if ((dim == 0 || dim == d) && find_method(m, d)) known = true;
+      if (!known) {
+        std::string avail;
+        for (int d : dims) {
+          if (dim != 0 && dim != d) continue;
+          for (const auto& n : methods_for_dim(d))
+            if ((", " + avail + ", ").find(", " + n + ", ") == std::string::npos)
+              avail += (avail.empty() ? "" : ", ") + n;
+        }
+        refuse(s, "'" + m + "'",
+               (dim ? "not a " + std::to_string(dim) + "D method" : std::string("unknown method")) +
+                   " (available: " + avail + ")");
+      }
+      continue;
+    }
+    if (is_string(s)) {
+      const std::string& v = o.*std::get<std::string OptimizeOptions::*>(s.field);
+      bool ok = s.choices.empty();
+      for (const auto& c : s.choices) ok = ok || v == c;
+      if (!ok) refuse(s, "'" + v + "'", "expected " + range_text(s));
+      if (s.name == "sizing" && v == "function" && !o.size_function)
+        refuse(s, "'function'", "needs a size_function (C++ API)");
+    } else if (!is_bool(s)) {
+      const double v = value_number(s, o);
+      const bool special = s.has_special && v == s.special;
+      if (!special && !(v >= s.min && v <= s.max)) refuse(s, fmt(v), "expected " + range_text(s));
+    }
+    const int here = dim == 2 ? kDim2 : dim == 3 ? kDim3 : kDim23;
+    if (!(s.dims & here) && !is_default(s, o))
+      refuse(s, value_text(s, o),
+             std::string("a ") + (s.dims == kDim2 ? "2D" : "3D") + " option; this mesh is " +
+                 std::to_string(dim) + "D");
+  }
+}
+
+OptimizeOptions resolve(const OptimizeOptions& o, int dim) {
+  OptimizeOptions r = o;
+  if (r.method.empty() || (dim == 2 && r.method == default_method(3)))
+    r.method = default_method(dim);
+  if (r.lbfgs_memory < 0) r.lbfgs_memory = dim == 3 ? 5 : 0;
+  return r;
+}
+
+const std::vector<OptionPreset>& lloyd_step_presets() {
+  static const std::vector<OptionPreset> p = {
+      {"default", "the dimension's default (L-BFGS in 3D, over-relaxed Anderson Lloyd in 2D)", {}},
+      {"L-BFGS", "quasi-Newton on the CVT energy (fewest iterations)", {{"lbfgs", 5}}},
+      {"Anderson", "over-relaxed Lloyd with Anderson mixing", {{"lbfgs", 0}}},
+      {"plain (paper)",
+       "the paper's plain Lloyd step",
+       {{"lbfgs", 0}, {"anderson", 0}, {"relaxation", 1.0}}},
+  };
+  return p;
+}
+
+void apply_preset(const std::string& name, OptimizeOptions& o) {
+  for (const OptionPreset& p : lloyd_step_presets()) {
+    if (p.name != name) continue;
+    for (const auto& [opt, v] : p.values) set_number(*find_option(opt), o, v);
+    return;
+  }
+  std::string avail;
+  for (const OptionPreset& p : lloyd_step_presets()) avail += (avail.empty() ? "" : ", ") + p.name;
+  throw OptionError("lloyd_step", name, "unknown Lloyd step '" + name + "' (available: " + avail + ")");
+}
+
+}  // namespace cvtmesh
