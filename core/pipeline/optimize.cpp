@@ -288,11 +288,18 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   if (!failure.empty()) {
     r.notes.push_back(failure);
     data.tet = input;
+    // The polish alone on the input, then its gentlest form (smoothing only: no flips, no
+    // sliver repair, which may raise the maximum dihedral angle), the first not worse is kept.
     bool polished = false;
-    if (method != "smooth") {
+    for (int gentle = method == "smooth" ? 1 : 0; gentle <= 1 && !polished; ++gentle) {
+      OptimizeOptions po = oo;
+      if (gentle) {
+        po.polish_flip_below = 0;
+        po.polish_repair = false;
+      }
       try {
         OptimizeResult p;
-        TetMesh m = run_method3(input, "smooth", oo, p);
+        TetMesh m = run_method3(input, "smooth", po, p);
         const std::string worse = worse_than(quality_stats(m, ""), r.before);
         if (worse.empty()) {
           data.tet = std::move(m);
@@ -300,7 +307,9 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
           r.method = "smooth";
           r.iterations = p.iterations;
           r.converged = p.converged;
-          r.notes.push_back("the polish alone ('smooth') on the input is kept instead");
+          r.notes.push_back(gentle ? "the polish's smoothing alone on the input (no flips, no "
+                                     "sliver repair) is kept instead"
+                                   : "the polish alone ('smooth') on the input is kept instead");
         }
       } catch (const InvariantError&) {
       }
