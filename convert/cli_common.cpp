@@ -14,6 +14,7 @@ ReadOptions InputOpts::to_read_options() const {
   ReadOptions r;
   r.dim = dim;
   r.mesh_size_factor = size_factor;
+  r.allow_system_calls = allow_system_calls;
   for (const auto& s : set_numbers) {
     const auto eq = s.find('=');
     if (eq == std::string::npos)
@@ -44,6 +45,9 @@ void add_input(CLI::App* c, InputOpts& in) {
   c->add_option("--set-string", in.set_strings,
                 "NAME=VALUE: set a .geo string parameter (like gmsh -setstring)");
   c->add_option("--size-factor", in.size_factor, "Gmsh Mesh.MeshSizeFactor when a model is meshed");
+  c->add_flag("--allow-system-calls", in.allow_system_calls,
+              "let a .geo script (and what it includes) run programs (SystemCall, "
+              "NonBlockingSystemCall, OnelabRun); refused by default");
 }
 
 WriteOptions OutputOpts::to_write_options(const MeshData& d, const std::string& input) const {

@@ -26,6 +26,7 @@ struct InputOpts {
   std::vector<std::string> set_numbers;
   std::vector<std::string> set_strings;
   double size_factor = 0;
+  bool allow_system_calls = false;
   ReadOptions to_read_options() const;
 };
 void add_input(CLI::App* c, InputOpts& in);

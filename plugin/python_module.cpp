@@ -14,6 +14,7 @@
 
 #include "plugin/gmsh_inprocess.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/geo_scan.h"
 #include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
 #include "core/util/error.h"
@@ -149,6 +150,26 @@ PYBIND11_MODULE(cvtmesh, m) {
         return out;
       },
       "The options of optimize() (the option schema): name, CLI flag, default, help.");
+
+  m.def(
+      "scan_geo",
+      [](const std::string& path) {
+        py::list out;
+        for (const GeoScanFinding& f : scan_geo_for_processes(path)) {
+          py::dict d;
+          d["file"] = f.file;
+          d["line"] = f.line;
+          d["command"] = f.command;
+          d["detail"] = f.detail;
+          out.append(d);
+        }
+        return out;
+      },
+      py::arg("path"),
+      "The commands of a .geo script (and of what it Includes or Merges) that would start a\n"
+      "program (SystemCall, NonBlockingSystemCall, OnelabRun, Solver.Executable, or a file name\n"
+      "the scan cannot follow): a list of dicts (file, line, command, detail); empty if none.\n"
+      "Call it before gmsh.open on a file from someone else (docs/reliability.md, Security).");
 
   m.def(
       "quality",

@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <random>
+#include <set>
 
 #include "core/util/error.h"
 
@@ -16,6 +18,11 @@ namespace cvtmesh {
 namespace fs = std::filesystem;
 
 namespace {
+// The temporaries not yet committed or removed, for abandon_pending_outputs().
+std::mutex g_pending_mutex;
+std::set<std::string> g_pending;
+bool g_abandoned = false;
+
 std::string dir_of(const std::string& path) {
   const fs::path p(path);
   return p.has_parent_path() ? p.parent_path().string() : std::string(".");
@@ -41,10 +48,21 @@ AtomicFile::AtomicFile(const std::string& target) : target_(target) {
   temp_ =
       (fs::path(dir) / ("." + p.stem().string() + ".cvtmesh-tmp-" + buf + p.extension().string()))
           .string();
+  std::lock_guard<std::mutex> lock(g_pending_mutex);
+  g_pending.insert(temp_);
 }
 
 AtomicFile::~AtomicFile() {
+  std::lock_guard<std::mutex> lock(g_pending_mutex);
   if (!committed_) std::remove(temp_.c_str());
+  g_pending.erase(temp_);
+}
+
+void abandon_pending_outputs() {
+  std::lock_guard<std::mutex> lock(g_pending_mutex);
+  g_abandoned = true;
+  for (const std::string& t : g_pending) std::remove(t.c_str());
+  g_pending.clear();
 }
 
 void AtomicFile::commit() {
@@ -76,6 +94,8 @@ void AtomicFile::commit() {
   if (rc != 0)
     throw OutputError("cannot write '" + target_ + "': " + std::strerror(err) +
                       " (disk full or I/O error?)");
+  std::lock_guard<std::mutex> lock(g_pending_mutex);
+  if (g_abandoned) throw OutputError("cannot write '" + target_ + "': the run was stopped");
   if (std::rename(temp_.c_str(), target_.c_str()) != 0)
     throw OutputError("cannot write '" + target_ + "': " + std::strerror(errno));
   committed_ = true;

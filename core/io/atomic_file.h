@@ -27,6 +27,11 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// Removes every temporary not yet committed and makes later commits fail (OutputError): what a
+// front end calls before it stops the process early (the CLI's --time-limit), so that no partial
+// output is left. Thread-safe; a commit is either complete before it or never happens.
+void abandon_pending_outputs();
+
 // Options shared by every writer.
 struct OutputPolicy {
   bool force = false;      // allow replacing an existing output file

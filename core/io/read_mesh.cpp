@@ -1,5 +1,10 @@
 #include "core/io/read_mesh.h"
 
+#include <optional>
+
+#include "core/io/geo_scan.h"
+#include "core/io/process_guard.h"
+
 #include <gmsh.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -46,6 +51,22 @@ void check_readable(const std::string& path) {
 // A .msh is a sequence of $Section ... $EndSection blocks (also in binary files): a file that does
 // not start with a section or does not end with an $End line is garbage or truncated. Gmsh
 // itself would try to parse garbage as a script, or read a truncated file up to where it stops.
+// A --set/--set-string parameter written into the .geo wrapper: the name an identifier, a string
+// value free of what would end its quotes (no code can be injected through it).
+void check_geo_parameter(const std::string& path, const std::string& name,
+                         const std::string& value) {
+  bool ok = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  if (!ok)
+    throw InputError("'" + path + "': parameter name '" + name +
+                     "' is not an identifier (letters, digits, _)");
+  for (char c : value)
+    if (c == '"' || c == '\\' || c == '\n' || c == '\r')
+      throw InputError("'" + path + "': the value of string parameter '" + name +
+                       "' holds a quote, backslash or line break, which a .geo string cannot "
+                       "hold here");
+}
+
 void check_msh_frame(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string head(256, '\0');
@@ -117,6 +138,15 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     return d;
   }
   if (ext == ".msh") check_msh_frame(path);
+  // Parameter names are identifiers and string values cannot close their quotes: the wrapper
+  // below writes them into .geo source.
+  for (const auto& [name, value] : options.set_numbers) check_geo_parameter(path, name, "");
+  for (const auto& [name, value] : options.set_strings) check_geo_parameter(path, name, value);
+  const bool script = gmsh_parses_as_script(ext);
+  if (script && !options.allow_system_calls) {
+    const std::vector<GeoScanFinding> findings = scan_geo_for_processes(path, options.set_strings);
+    if (!findings.empty()) throw InputError(geo_scan_message(findings));
+  }
   GmshSession session;
   MeshData data;
   std::string previous;
@@ -151,7 +181,16 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     gmsh::option::setNumber("General.NumThreads", 1);
     std::vector<std::string> log_before, log;
     gmsh::logger::get(log_before);
-    gmsh::open(wrapper.empty() ? path : wrapper);
+    {
+      // Whatever the scan did not see cannot start a process either (process_guard.h).
+      std::optional<ProcessGuard> guard;
+      if (!options.allow_system_calls) guard.emplace();
+      gmsh::open(wrapper.empty() ? path : wrapper);
+      if (guard && !guard->refused().empty())
+        throw InputError("'" + path + "': Gmsh was asked to run '" + guard->refused().front() +
+                         "'; refused: cvtmesh does not run programs from model files unless given "
+                         "--allow-system-calls (docs/reliability.md, Security)");
+    }
     // Gmsh keeps the first of two nodes or elements with one tag and only logs it: ambiguous
     // data, refused (the log holds messages only when our session started the logger).
     gmsh::logger::get(log);

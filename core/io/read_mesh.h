@@ -22,6 +22,11 @@ struct ReadOptions {
   std::vector<std::pair<std::string, double>> set_numbers;
   // Strings set the same way (like gmsh -setstring NAME VALUE), e.g. {"stl", "/data/femur.stl"}.
   std::vector<std::pair<std::string, std::string>> set_strings;
+  // A script Gmsh parses (.geo, and whatever it Includes or Merges) may start programs
+  // (SystemCall, NonBlockingSystemCall, OnelabRun) only if this is true: otherwise it is scanned
+  // first and refused with InputError naming the file, line and command (geo_scan.h), and any
+  // attempt the scan missed is blocked while Gmsh parses (process_guard.h).
+  bool allow_system_calls = false;
 };
 
 // Throws InputError with a message naming the file and the problem.

@@ -178,6 +178,17 @@ class InProcessScripting(unittest.TestCase):
         self.assertIn("relaxation", names)
         self.assertIn("relaxation", cvtmesh.optimize.__doc__)
 
+    def test_scan_geo_finds_a_system_call_in_an_included_file(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            with open(os.path.join(tmp, "part.geo"), "w") as f:
+                f.write("// SystemCall in a comment is fine\nOnelabRun \"x\";\n")
+            with open(os.path.join(tmp, "m.geo"), "w") as f:
+                f.write("Include \"part.geo\";\n")
+            found = cvtmesh.scan_geo(os.path.join(tmp, "m.geo"))
+            self.assertEqual([(os.path.basename(x["file"]), x["line"], x["command"]) for x in found],
+                             [("part.geo", 2, "OnelabRun")])
+        self.assertEqual(cvtmesh.scan_geo(os.path.join(SOURCE_DIR, "geo", "cube_sphere.geo")), [])
+
     def test_errors_are_exceptions_and_leave_the_model_alone(self):
         before = nodes(3)
         with self.assertRaises(ValueError):
