@@ -1,5 +1,6 @@
 #include "convert/cli_common.h"
 
+#include "core/io/read_msh_format.h"
 #include "core/quality/quality_fields.h"
 
 namespace cvtmesh::cli {
@@ -51,8 +52,10 @@ void add_input(CLI::App* c, InputOpts& in) {
 
 WriteOptions OutputOpts::to_write_options(const MeshData& d, const std::string& input) const {
   WriteOptions w;
-  w.msh_version = msh_version;
-  w.binary = binary;
+  // A .msh output takes the input's version and binary/ASCII mode unless told otherwise.
+  const MshFormat f = read_msh_format(input);
+  w.msh_version = msh_version > 0 ? msh_version : f.ok && f.version < 3 ? 2.2 : 4.1;
+  w.binary = binary || (f.ok && f.binary && !ascii);
   if (quality) w.fields = quality_fields(d);
   w.policy.force = !no_clobber;
   w.policy.in_place = in_place;
@@ -63,9 +66,12 @@ WriteOptions OutputOpts::to_write_options(const MeshData& d, const std::string& 
 void add_output_flags(CLI::App* c, OutputOpts& o) {
   c->add_flag("--quality", o.quality,
               "store per-element quality (Q, radius ratio, min angle) as element data");
-  c->add_option("--msh-version", o.msh_version, "version of a .msh output: 4.1 (default) or 2.2")
+  c->add_option("--msh-version", o.msh_version,
+                "version of a .msh output: 4.1 or 2.2 (default: the input's if it is a .msh, "
+                "else 4.1)")
       ->check(CLI::IsMember({4.1, 2.2}));
-  c->add_flag("--binary", o.binary, "binary .msh output");
+  c->add_flag("--binary", o.binary, "binary .msh output (default: as the input .msh)");
+  c->add_flag("--ascii", o.ascii, "ASCII .msh output even if the input .msh is binary");
   c->add_flag("--no-clobber", o.no_clobber,
               "refuse to replace an existing output file (default: replace it, like gmsh -o)");
   c->add_flag("--in-place", o.in_place, "allow the output to be the input file itself");

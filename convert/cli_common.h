@@ -35,8 +35,9 @@ void add_input(CLI::App* c, InputOpts& in);
 struct OutputOpts {
   std::string path;
   bool quality = false;
-  double msh_version = 4.1;
+  double msh_version = 0;  // 0: the input's (.msh), else 4.1
   bool binary = false;
+  bool ascii = false;
   bool no_clobber = false;
   bool in_place = false;
   WriteOptions to_write_options(const MeshData& d, const std::string& input) const;

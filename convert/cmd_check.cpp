@@ -4,6 +4,7 @@
 
 #include "convert/cli_common.h"
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/find_structural_defects.h"
 
 namespace cvtmesh::cli {
 
@@ -17,8 +18,23 @@ void register_check(CLI::App& app) {
                           // read_mesh already refuses inverted/flat elements and open meshes with a
                           // clear message; what reaches here is checked again in full.
                           const MeshData d = read_mesh(in->path, in->to_read_options());
-                          const MeshCheck r = d.dim == 3 ? check_mesh(d.tet) : check_mesh(d.tri);
+                          MeshCheck r = d.dim == 3 ? check_mesh(d.tet) : check_mesh(d.tri);
                           const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
+                          // Structure: a self-intersecting boundary is invalid; coincident
+                          // nodes (parts in contact) are reported as a warning.
+                          if (d.dim == 3) {
+                            const StructuralDefects s = find_structural_defects(d.tet);
+                            const auto lines = s.describe(d.tet);
+                            for (std::size_t i = 0; i < lines.size(); ++i) {
+                              const bool intersect = i == 0 && !s.intersecting_tris.empty();
+                              if (intersect) {
+                                r.ok = false;
+                                r.problems.push_back(lines[i]);
+                              } else {
+                                std::cerr << in->path << ": warning: " << lines[i] << "\n";
+                              }
+                            }
+                          }
                           if (r.ok) {
                             std::cout << in->path << ": ok (" << n
                                       << (d.dim == 3 ? " tetrahedra" : " triangles") << ", "

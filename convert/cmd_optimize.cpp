@@ -15,6 +15,7 @@ void register_optimize(CLI::App& app) {
   auto out = std::make_shared<OutputOpts>();
   auto opt = std::make_shared<OptimizeOptions>();
   auto quiet = std::make_shared<bool>(false);
+  auto strict = std::make_shared<bool>(false);
   CLI::App* c = app.add_subcommand(
       "optimize", "optimize a mesh (CVT/Lloyd CVDT, sliver swaps, classical baselines)");
   add_input(c, *in);
@@ -26,8 +27,14 @@ void register_optimize(CLI::App& app) {
                 "free boundary: keep the surfaces / curves of this physical group (by name) fixed; "
                 "repeatable");
   c->add_flag("-q,--quiet", *quiet, "no progress on stderr");
+  c->add_flag("--strict", *strict,
+              "exit with code 6 (after writing the output) when the method stopped at the "
+              "iteration cap, fell back to local operations, or the input was kept");
+  c->add_flag("!--allow-worse", opt->never_worse,
+              "keep the method's result even if its Q_min or dihedral angles are worse than the "
+              "input's (default: fall back to the polish alone, or keep the input)");
   commands().push_back(
-      {c, [in, out, opt, quiet] {
+      {c, [in, out, opt, quiet, strict] {
          validate(*opt, 0);  // a bad value fails before the (possibly long) read
          MeshData d = read_mesh(in->path, in->to_read_options());
          // A bad output location fails now, not after the optimization.
@@ -69,9 +76,17 @@ void register_optimize(CLI::App& app) {
                         r.nb_boundary_moved, r.hausdorff, r.hausdorff / r.diagonal,
                         r.hausdorff_tolerance, 100 * r.volume_change, r.tri_q_min_before,
                         r.tri_q_min_after);
+         for (const auto& note : r.notes) std::cerr << "cvtmesh: note: " << note << "\n";
+         const bool capped = !r.converged && !r.kept_input;
+         if (capped)
+           std::cerr << "cvtmesh: warning: '" << r.method << "' stopped at the iteration cap ("
+                     << r.iterations << " iterations) before converging; raise --max-iterations "
+                     << "or --tolerance\n";
          std::cerr << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
-                   << " iterations, " << (r.converged ? "converged" : "not converged") << ")\n";
-         return 0;
+                   << " iterations, " << (r.converged ? "converged" : "not converged")
+                   << (r.kept_input ? ", input kept unchanged" : "") << ")\n";
+         const bool fell_back = r.kept_input || r.method != opt->method;
+         return *strict && (capped || fell_back) ? 6 : 0;
        }});
 }
 

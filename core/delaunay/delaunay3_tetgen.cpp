@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "core/delaunay/component_seeds.h"
 #include "core/delaunay/delaunay3.h"
+#include "core/delaunay/tetgen_error.h"
 #include "core/geometry/tetgen_library.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
@@ -20,41 +22,35 @@
 namespace cvtmesh {
 namespace {
 
-// One interior point per region: the centroid of a tet of that region (strictly inside it, and
-// region boundaries are constrained faces that do not move).
-std::map<int, std::array<double, 3>> region_seeds(const TetMesh& m) {
-  std::map<int, std::array<double, 3>> seeds;
-  std::map<int, double> best;
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] < 0) continue;
-    // Prefer a fat tet: a seed near a face of a flat tet is fragile.
-    const double vol = orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
-    const int r = m.tet_region[t];
-    if (best.count(r) && best[r] >= vol) continue;
-    best[r] = vol;
-    std::array<double, 3> c{0, 0, 0};
-    for (int k = 0; k < 4; ++k)
-      for (int d = 0; d < 3; ++d) c[d] += 0.25 * m.point(v[k])[d];
-    seeds[r] = c;
-  }
-  return seeds;
-}
-
 class TetgenDelaunay3 final : public Delaunay3 {
  public:
   std::string name() const override { return "tetgen"; }
 
   Delaunay3Stats retetrahedralize(TetMesh& m) override {
     Delaunay3Stats stats;
-    const auto seeds = region_seeds(m);
+    const auto seeds = component_seeds(m);
     const int nv = m.nb_vertices();
+
+    // Only the vertices a tet or a constrained triangle uses: a node no element uses (a meshed
+    // wire, a duplicated CAD point) is not TetGen's to insert (it merged such duplicates and
+    // "lost" them) and stays where it is, unused.
+    std::vector<int> ids, id_of(nv, -1);
+    for (int v : m.tets)
+      if (v >= 0 && id_of[v] < 0) id_of[v] = 0;
+    for (int v : m.tris) id_of[v] = 0;
+    for (int v = 0; v < nv; ++v)
+      if (id_of[v] == 0) {
+        id_of[v] = static_cast<int>(ids.size());
+        ids.push_back(v);
+      }
+    const int np = static_cast<int>(ids.size());
 
     tetgenio in, out;
     in.firstnumber = 0;
-    in.numberofpoints = nv;
-    in.pointlist = new REAL[3 * static_cast<std::size_t>(nv)];
-    std::copy(m.xyz.begin(), m.xyz.end(), in.pointlist);
+    in.numberofpoints = np;
+    in.pointlist = new REAL[3 * static_cast<std::size_t>(np)];
+    for (int i = 0; i < np; ++i)
+      for (int d = 0; d < 3; ++d) in.pointlist[3 * i + d] = m.xyz[3 * ids[i] + d];
 
     const int nf = m.nb_tris();
     in.numberoffacets = nf;
@@ -68,7 +64,7 @@ class TetgenDelaunay3 final : public Delaunay3 {
       tetgenio::init(&fa.polygonlist[0]);
       fa.polygonlist[0].numberofvertices = 3;
       fa.polygonlist[0].vertexlist = new int[3];
-      for (int k = 0; k < 3; ++k) fa.polygonlist[0].vertexlist[k] = m.tris[3 * f + k];
+      for (int k = 0; k < 3; ++k) fa.polygonlist[0].vertexlist[k] = id_of[m.tris[3 * f + k]];
       in.facetmarkerlist[f] = m.tri_surface[f];
     }
     in.numberofregions = static_cast<int>(seeds.size());
@@ -91,16 +87,16 @@ class TetgenDelaunay3 final : public Delaunay3 {
     try {
       tetgen_library().tetrahedralize(switches, &in, &out, nullptr, nullptr);
     } catch (int code) {
-      throw InvariantError("TetGen failed to recover the boundary (error code " +
-                           std::to_string(code) + ")");
+      throw InvariantError("TetGen failed to recover the boundary: " + tetgen_error(code));
     }
-    if (out.numberofpoints < nv)
-      throw InvariantError("TetGen lost input points (" + std::to_string(nv - out.numberofpoints) +
+    if (out.numberofpoints < np)
+      throw InvariantError("TetGen lost input points (" + std::to_string(np - out.numberofpoints) +
                            ")");
 
     // Steiner points (interior only, thanks to -Y) are appended as free vertices.
-    stats.nb_steiner = out.numberofpoints - nv;
-    for (int p = nv; p < out.numberofpoints; ++p) {
+    stats.nb_steiner = out.numberofpoints - np;
+    for (int p = np; p < out.numberofpoints; ++p) {
+      ids.push_back(m.nb_vertices());
       m.xyz.insert(m.xyz.end(), out.pointlist + 3 * p, out.pointlist + 3 * p + 3);
       m.vclass.push_back(VertexClass{3, 0});
       if (!m.node_tags.empty()) m.node_tags.push_back(0);
@@ -119,7 +115,7 @@ class TetgenDelaunay3 final : public Delaunay3 {
         continue;
       }
       int v[4];
-      for (int k = 0; k < 4; ++k) v[k] = out.tetrahedronlist[4 * t + k];
+      for (int k = 0; k < 4; ++k) v[k] = ids[out.tetrahedronlist[4 * t + k]];
       if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0)
         std::swap(v[2], v[3]);
       m.tets.insert(m.tets.end(), v, v + 4);

@@ -12,6 +12,8 @@
 #include "core/geometry/z_range.h"
 #include "core/geometry/predicates.h"
 #include "core/io/gmsh_session.h"
+#include "core/mesh/keep_loose_triangles.h"
+#include "core/mesh/constrain_kept_cell_faces.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/check_mesh.h"
 #include "core/util/error.h"
@@ -29,6 +31,24 @@ std::string type_name(int type) {
     name = "type " + std::to_string(type);
   }
   return name;
+}
+
+int type_order(int type) {
+  std::string name;
+  int dim = 0, order = 1, nn = 0, npn = 0;
+  std::vector<double> lc;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, nn, lc, npn);
+  } catch (...) {
+  }
+  return order;
+}
+
+// For a high-order element: what to do instead.
+std::string order_hint(int type) {
+  if (type_order(type) <= 1) return "";
+  return "; for a high-order mesh, optimize its order-1 mesh (gmsh -order 1, or "
+         "Mesh.ElementOrder = 1) and raise the order afterwards (gmsh -order N)";
 }
 
 std::string check_summary(const MeshCheck& c) {
@@ -74,6 +94,19 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         for (const auto& [bd, bt] : b) e.boundary.push_back(bt);
       }
       info.entities.push_back(e);
+    }
+    // Periodic links (entity and node correspondences), kept by node tag.
+    for (const auto& [d, t] : ents) {
+      PeriodicLink l;
+      l.dim = d;
+      l.tag = t;
+      try {
+        gmsh::model::mesh::getPeriodicNodes(d, t, l.master, l.node_tags, l.master_node_tags,
+                                            l.affine, false);
+      } catch (...) {
+        continue;
+      }
+      if (l.master != t && !l.node_tags.empty()) info.periodic.push_back(std::move(l));
     }
     gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups);
@@ -136,13 +169,28 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         const int type = types[k];
         const auto& tg = etags[k];
         const auto& nd = enodes[k];
-        if (d == dim) {
+        // Hybrid meshes: hexahedra (5), prisms (6), pyramids (7) in a volume and quadrangles
+        // (3) on a surface are kept verbatim; optimize() fixes their vertices.
+        const bool kept_type = dim == 3 && ((d == 3 && (type == 5 || type == 6 || type == 7)) ||
+                                            (d == 2 && type == 3));
+        if (kept_type || (d < dim - 1 && (type == 15 || type == 1))) {
+          ElementBlock b;
+          b.dim = d;
+          b.entity = t;
+          b.gmsh_type = type;
+          b.tags = tg;
+          for (std::size_t n : nd) b.nodes.push_back(vid(n));
+          info.extra.push_back(std::move(b));
+        } else if (d == dim) {
           const int want = dim == 3 ? 4 : 2;
           if (type != want)
             throw InputError(what + ": unsupported element type '" + type_name(type) + "' in " +
                              (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
                              " (cvtmesh optimizes linear " +
-                             (dim == 3 ? "tetrahedra" : "triangles") + " only)");
+                             (dim == 3 ? "tetrahedra" : "triangles") + " only" +
+                             (type == 3 ? "; mesh the surface without Recombine for triangles"
+                                        : "") +
+                             order_hint(type) + ")");
           const int npe = dim + 1;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) cells.push_back(vid(nd[npe * e + j]));
@@ -154,7 +202,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           if (type != want)
             throw InputError(what + ": unsupported element type '" + type_name(type) + "' on " +
                              (dim == 3 ? "surface " : "curve ") + std::to_string(t) +
-                             " (expected linear " + (dim == 3 ? "triangles" : "lines") + ")");
+                             " (expected linear " + (dim == 3 ? "triangles" : "lines") + ")" +
+                             order_hint(type));
           const int npe = dim;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) facets.push_back(vid(nd[npe * e + j]));
@@ -162,23 +211,18 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
             facet_tags.push_back(tg[e]);
           }
         } else if (d < dim - 1) {
-          if (type != 15 && type != 1)
-            throw InputError(what + ": unsupported element type '" + type_name(type) +
-                             "' on entity (" + std::to_string(d) + "," + std::to_string(t) + ")");
-          ElementBlock b;
-          b.dim = d;
-          b.entity = t;
-          b.gmsh_type = type;
-          b.tags = tg;
-          for (std::size_t n : nd) b.nodes.push_back(vid(n));
-          info.extra.push_back(std::move(b));
+          throw InputError(what + ": unsupported element type '" + type_name(type) +
+                           "' on entity (" + std::to_string(d) + "," + std::to_string(t) + ")" +
+                           order_hint(type));
         } else {
           throw InputError(what + ": has " + std::to_string(d) + "D elements ('" + type_name(type) +
                            "') but is read as a " + std::to_string(dim) + "D mesh");
         }
       }
     }
-    if (cells.empty())
+    bool kept_cells = false;
+    for (const auto& b : info.extra) kept_cells |= b.dim == dim;
+    if (cells.empty() && !kept_cells)
       throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") +
                        " (empty mesh)");
 
@@ -194,6 +238,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       m.tri_surface = std::move(facet_entity);
       m.tri_tags = std::move(facet_tags);
       m.model = std::move(info);
+      keep_loose_triangles(m);
       long bad = 0;
       std::size_t first_bad = 0;
       for (int t = 0; t < m.nb_tets(); ++t) {
@@ -208,6 +253,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
                          " tetrahedra are inverted or flat (first: element " +
                          std::to_string(first_bad) + ")");
       build_adjacency(m);
+      constrain_kept_cell_faces(m);
       const MeshCheck c = check_mesh(m);
       if (!c.ok) throw InputError(what + ": invalid tetrahedral mesh: " + check_summary(c));
     } else {
@@ -216,8 +262,30 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       // Planarity: every node of the 2D mesh at the same z (relative tolerance).
       const ZRange zr = z_range(xyz);
       const double zmin = zr.zmin, zmax = zr.zmax;
+      // The surfaces that leave the plane of the first one, named in the message.
+      std::string off_plane;
+      if (!zr.planar) {
+        std::map<int, std::vector<int>> by_surface;
+        for (std::size_t e = 0; e < cell_entity.size(); ++e)
+          for (int k = 0; k < 3; ++k) by_surface[cell_entity[e]].push_back(cells[3 * e + k]);
+        double z0 = 0;
+        bool first = true;
+        int listed = 0;
+        for (const auto& [srf, ids] : by_surface) {
+          const ZRange r = z_range(xyz, &ids);
+          if (first) z0 = r.zmin;
+          first = false;
+          std::vector<double> two = {0, 0, z0, 0, 0, r.zmin, 0, 0, r.zmax};
+          if (!r.planar || !z_range(two).planar) {
+            if (listed++ < 8) off_plane += (off_plane.empty() ? "" : ", ") + std::to_string(srf);
+          }
+        }
+        if (listed > 8) off_plane += ", ...";
+      }
       if (!zr.planar)
-        throw InputError(what + ": the triangle mesh is not planar (z varies from " +
+        throw InputError(what + ": the triangle mesh is not planar" +
+                         (off_plane.empty() ? "" : " (surfaces " + off_plane + " are not in the plane z = const of the first surface)") +
+                         " (z varies from " +
                          std::to_string(zmin) + " to " + std::to_string(zmax) +
                          "); 2D optimization needs a mesh in a plane z = const");
       m.z0 = n ? zmin : 0;
@@ -276,7 +344,8 @@ void complete_model_info(MeshData& data) {
   if (data.dim == 3) {
     TetMesh& m = data.tet;
     for (int r : m.tet_region) ensure(3, r);
-    for (int s : m.tri_surface) ensure(2, s);
+    for (int s : m.tri_surface)
+      if (!is_kept_cell_interface(s)) ensure(2, s);
     if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices()))
       m.vclass.assign(m.nb_vertices(), {3, 0});
     for (int f = 0; f < m.nb_tris(); ++f)
@@ -405,7 +474,8 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
     const int n = static_cast<int>(conn.size()) / npe;
     std::vector<std::pair<int, std::size_t>> order;  // (element index, tag) for the main ones
     for (int e = 0; e < n; ++e) {
-      if (conn[npe * e] < 0) continue;
+      // Dead elements, and the not-written interface with kept cells (hybrid meshes).
+      if (conn[npe * e] < 0 || is_kept_cell_interface(entity[e])) continue;
       auto& [tg, nd] = blocks[entity[e]];
       const std::size_t tag = tag_for(orig, e);
       tg.push_back(tag);

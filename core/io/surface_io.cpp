@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/io/read_mesh.h"
+#include "core/io/read_surface_coordinates.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/util/error.h"
 
@@ -171,11 +172,28 @@ SurfaceMesh read_surface(const std::string& path, bool require_closed) {
   }
   SurfaceMesh s;
   std::vector<int> map(mesh.n_vertices(), -1);
+  // Double-precision coordinates where we can read them (ASCII .off / .obj), if they agree with
+  // OpenMesh's single-precision ones vertex by vertex.
+  std::vector<double> exact = read_surface_coordinates(path);
+  if (exact.size() == 3 * mesh.n_vertices()) {
+    for (const auto v : mesh.vertices()) {
+      const auto& p = mesh.point(v);
+      for (int k = 0; k < 3; ++k) {
+        const double e = exact[3 * v.idx() + k];
+        if (!(std::abs(e - p[k]) <= 1e-6 * (1 + std::abs(e)))) exact.clear();
+      }
+      if (exact.empty()) break;
+    }
+  } else {
+    exact.clear();
+  }
   for (const auto f : mesh.faces()) {
     for (const auto v : mesh.fv_range(f)) {
       int& id = map[v.idx()];
       if (id < 0) {
-        const auto& p = mesh.point(v);
+        OMesh::Point p = mesh.point(v);
+        if (!exact.empty())
+          for (int k = 0; k < 3; ++k) p[k] = exact[3 * v.idx() + k];
         for (int k = 0; k < 3; ++k)
           if (!std::isfinite(p[k]))
             throw InputError(what + ": vertex " + std::to_string(v.idx() + 1) +

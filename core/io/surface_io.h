@@ -25,7 +25,8 @@ SurfaceMesh boundary_surface(const MeshData& data);
 void write_surface(const MeshData& data, const std::string& path);
 
 // Reads a triangulated surface with OpenMesh (polygons are split into triangles; coordinates in
-// single precision, as OpenMesh 9 reads them). Rejects with an
+// single precision as OpenMesh 9 reads them, except ASCII .off/.obj: double,
+// read_surface_coordinates.h). Rejects with an
 // InputError naming the file: unreadable or garbage files, faces with invalid or repeated vertex
 // ids, non-finite coordinates, non-manifold or inconsistently oriented surfaces, and, if
 // `require_closed`, surfaces with boundary edges (open). Vertices no face uses are dropped.

@@ -1,5 +1,7 @@
 #include "core/io/write_mesh.h"
 
+#include "core/io/append_msh_periodic.h"
+
 #include <gmsh.h>
 
 #include <algorithm>
@@ -78,6 +80,7 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
       gmsh::option::setNumber("Mesh.SaveParametric", 0);
       if (ext == ".msh" && o.msh_version < 3) keep_groups_in_msh22();
       gmsh::write(tmp);
+      if (ext == ".msh") append_msh_periodic(tmp, data.model().periodic, o.msh_version, o.binary);
       if (ext == ".msh" && !o.fields.empty()) {
         views = add_element_views(o.fields, written.element_tags);
         gmsh::option::setNumber("PostProcessing.SaveMesh", 0);

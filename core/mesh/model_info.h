@@ -30,12 +30,24 @@ struct ElementBlock {
   std::vector<int> nodes;         // #E * nodes-per-element, 0-based vertex ids
 };
 
+// A periodic link of the mesh ($Periodic): entity (dim, tag) is the image of entity `master`
+// by `affine` (16 values, row-major 4x4; may be empty), node by node (Gmsh node tags, which the
+// writers keep).
+struct PeriodicLink {
+  int dim = 0;
+  int tag = 0;
+  int master = 0;
+  std::vector<double> affine;
+  std::vector<std::size_t> node_tags, master_node_tags;
+};
+
 struct ModelInfo {
   std::string name;
   std::string source;                 // path of the file it came from ("" if built in memory)
   std::vector<ModelEntity> entities;  // all entities, every dimension
   std::vector<PhysicalGroup> groups;
   std::vector<ElementBlock> extra;  // elements of dimension < mesh dimension - 1
+  std::vector<PeriodicLink> periodic;  // kept, their vertices fixed (core/mesh/pin_vertices.h)
 };
 
 }  // namespace cvtmesh

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "core/boundary/boundary_lloyd.h"
@@ -19,6 +20,11 @@
 #include "core/pipeline/repair_slivers.h"
 #include "core/swap/swap_slivers.h"
 #include "core/pipeline/verify_mesh.h"
+#include "core/geometry/round_coordinates.h"
+#include "core/mesh/check_mesh.h"
+#include "core/mesh/pin_vertices.h"
+#include "core/pipeline/find_structural_defects.h"
+#include "core/quality/worse_than.h"
 #include "core/quality/quality_stats.h"
 #include "core/util/error.h"
 #include "core/util/thread_count.h"
@@ -258,48 +264,196 @@ OptimizeProgress lloyd_progress(const LloydStep& s, const std::string& phase,
   return p;
 }
 
+namespace {
+
+bool rebuilds_tetrahedralization(const std::string& method) {
+  return method.rfind("cvdt", 0) == 0;
+}
+
+// Runs `method` on a copy of `input` (pinned vertices fixed), rounds the free vertices to what
+// a text writer stores, restores the classes, verifies (on the coordinates as they will be read
+// back: every tet must stay positive once all of them are rounded). Returns the mesh, or throws.
+TetMesh run_method3(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
+                    OptimizeResult& r) {
+  TetMesh mesh = input;
+  pin_vertices(mesh);
+  // The default method moves the boundary (issue 13; core/boundary/) unless fix_boundary.
+  const bool free_boundary = !o.fix_boundary && method == "cvdt+swap+smooth";
+  std::optional<BoundaryModel> b;
+  if (free_boundary) {
+    b = boundary_model(mesh, o);
+    run_cvdt_swap_smooth_free3(mesh, o, *b, r);
+  } else {
+    find_method(method, 3)->run3(mesh, o, r);
+  }
+  if (o.output_digits > 0) {
+    // Free (moved or new) vertices only: the fixed ones stay exactly as they came.
+    std::vector<char> free(mesh.nb_vertices(), 0);
+    for (int v = 0; v < mesh.nb_vertices(); ++v) {
+      free[v] = mesh.vclass[v].dim == 3;
+      if (free_boundary && v < input.nb_vertices())
+        for (int k = 0; k < 3; ++k) free[v] |= mesh.point(v)[k] != input.point(v)[k];
+    }
+    round_coordinates(mesh.xyz, o.output_digits, free);
+  }
+  unpin_vertices(mesh);
+  if (const int bad = last_non_positive_tet(mesh); bad >= 0)
+    throw InvariantError("tet " + std::to_string(bad) + " is flat or inverted");
+  if (o.output_digits > 0) {
+    TetMesh written = mesh;
+    round_coordinates(written.xyz, o.output_digits);
+    if (const int bad = last_non_positive_tet(written); bad >= 0)
+      throw InvariantError("tet " + std::to_string(bad) +
+                           " is flat or inverted once its coordinates are written with " +
+                           std::to_string(o.output_digits) + " digits");
+  }
+  if (!free_boundary) {
+    if (o.verify) verify_optimized(input, mesh);
+    return mesh;
+  }
+  VerifyOptions vo;
+  vo.boundary_moves = true;
+  vo.volume_tolerance = o.volume_tolerance;
+  if (o.verify) verify_optimized(input, mesh, vo);
+  FreeBoundaryTolerances ft;
+  ft.hausdorff = o.verify ? hausdorff_tolerance(o, *b) : 0;
+  ft.volume = o.verify ? o.volume_tolerance : 1e300;
+  const FreeBoundaryReport fr = verify_free_boundary(input, mesh, *b, ft);
+  r.boundary_free = true;
+  r.nb_boundary_moved = fr.nb_moved;
+  r.nb_surface_vertices = b->nb_surface_vertices;
+  r.nb_curve_vertices = b->nb_curve_vertices;
+  r.nb_fixed_vertices = b->nb_fixed_vertices;
+  r.hausdorff = fr.hausdorff.value();
+  r.hausdorff_tolerance = hausdorff_tolerance(o, *b);
+  r.diagonal = fr.diagonal;
+  r.volume_change = fr.max_volume_change;
+  r.tri_q_min_before = fr.tri_q_min_before;
+  r.tri_q_min_after = fr.tri_q_min_after;
+  return mesh;
+}
+
+// 2D: optimize_2d, and the input kept if the result is worse.
+OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& options) {
+  const TriMesh2 input = mesh;
+  OptimizeResult r = optimize_2d(mesh, options);
+  if (options.never_worse) {
+    const std::string worse = worse_than(r.after, r.before);
+    if (!worse.empty()) {
+      r.notes.push_back("'" + r.method + "' made the mesh worse (" + worse +
+                        "): the input is kept unchanged");
+      mesh = input;
+      r.kept_input = true;
+      const std::string label = r.after.label;
+      r.after = r.before;
+      r.after.label = label;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   // Every front end's values are checked here, against the one option schema.
   validate(options, data.dim);
   // Our thread count for the parallel loops (Gmsh may have set the process's to 1), the caller's
   // back on return.
   const ThreadCountScope threads;
-  if (data.dim == 2) return optimize_2d(data.tri, options);
+  if (data.dim == 2) return optimize_2d_no_worse(data.tri, options);
   const OptimizeOptions o = resolve(options, 3);
   OptimizeResult r;
   const auto t0 = std::chrono::steady_clock::now();
-  const MethodInfo* method = find_method(o.method, 3);
+  r.method = o.method;
+  long nb_kept = 0;
+  for (const ElementBlock& b : data.tet.model.extra)
+    if (b.dim >= 2) nb_kept += static_cast<long>(b.tags.size());
+  if (nb_kept)
+    r.notes.push_back(std::to_string(nb_kept) +
+                      " elements other than tets and their boundary triangles (surfaces bounding "
+                      "no volume, quadrangles, prisms, pyramids, hexahedra) kept unchanged, "
+                      "their vertices fixed");
+  if (data.tet.nb_tets() == 0) {
+    r.notes.push_back("no tetrahedra: nothing to optimize, the mesh is written unchanged");
+    r.kept_input = true;
+    r.converged = true;
+    r.before = r.after = quality_stats(data.tet, "before");
+    return r;
+  }
+  // If the input itself has tets that a 16-digit writer flattens, the output is verified in
+  // full precision (a binary .msh keeps it).
+  OptimizeOptions oo = o;
+  if (o.output_digits > 0) {
+    TetMesh rounded = data.tet;
+    round_coordinates(rounded.xyz, o.output_digits);
+    if (last_non_positive_tet(rounded) >= 0) {
+      oo.output_digits = 0;
+      r.notes.push_back("the input has tets that are flat once its coordinates are rounded to " +
+                        std::to_string(o.output_digits) +
+                        " digits: verified in full precision (write a binary .msh)");
+    }
+  }
   r.before = quality_stats(data.tet, "before");
   const TetMesh input = data.tet;
-  if (!o.fix_boundary && o.method == "cvdt+swap+smooth") {
-    // The default method moves the boundary (issue 13; core/boundary/).
-    const BoundaryModel b = boundary_model(data.tet, o);
-    run_cvdt_swap_smooth_free3(data.tet, o, b, r);
-    VerifyOptions vo;
-    vo.boundary_moves = true;
-    vo.volume_tolerance = o.volume_tolerance;
-    if (o.verify) verify_optimized(input, data.tet, vo);
-    FreeBoundaryTolerances ft;
-    ft.hausdorff = o.verify ? hausdorff_tolerance(o, b) : 0;
-    ft.volume = o.verify ? o.volume_tolerance : 1e300;
-    const FreeBoundaryReport fr = verify_free_boundary(input, data.tet, b, ft);
-    r.boundary_free = true;
-    r.nb_boundary_moved = fr.nb_moved;
-    r.nb_surface_vertices = b.nb_surface_vertices;
-    r.nb_curve_vertices = b.nb_curve_vertices;
-    r.nb_fixed_vertices = b.nb_fixed_vertices;
-    r.hausdorff = fr.hausdorff.value();
-    r.hausdorff_tolerance = hausdorff_tolerance(o, b);
-    r.diagonal = fr.diagonal;
-    r.volume_change = fr.max_volume_change;
-    r.tri_q_min_before = fr.tri_q_min_before;
-    r.tri_q_min_after = fr.tri_q_min_after;
-  } else {
-    method->run3(data.tet, o, r);
-    if (o.verify) verify_optimized(input, data.tet);
+  std::string method = o.method;
+  if (rebuilds_tetrahedralization(method)) {
+    const StructuralDefects defects = find_structural_defects(input, o.coincident_tolerance);
+    if (!defects.empty()) {
+      std::string what;
+      for (const auto& line : defects.describe(input)) what += (what.empty() ? "" : "; ") + line;
+      r.notes.push_back("the tetrahedralization cannot be rebuilt (" + what +
+                        "): local operations only (method 'smooth' instead of '" + method + "')");
+      method = "smooth";
+    }
   }
-  r.after = quality_stats(data.tet, o.method);
-  r.method = o.method;
+  std::string failure;
+  try {
+    data.tet = run_method3(input, method, oo, r);
+    if (o.never_worse) {
+      const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
+      if (!worse.empty()) failure = "'" + method + "' made the mesh worse (" + worse + ")";
+    }
+  } catch (const InvariantError& e) {
+    if (!o.never_worse) throw;
+    failure = "'" + method + "' failed (" + e.what() + ")";
+  }
+  if (!failure.empty()) {
+    r.notes.push_back(failure);
+    data.tet = input;
+    // The polish alone on the input, then its gentlest form (smoothing only: no flips, no
+    // sliver repair, which may raise the maximum dihedral angle), the first not worse is kept.
+    bool polished = false;
+    for (int gentle = method == "smooth" ? 1 : 0; gentle <= 1 && !polished; ++gentle) {
+      OptimizeOptions po = oo;
+      if (gentle) {
+        po.polish_flip_below = 0;
+        po.polish_repair = false;
+      }
+      try {
+        OptimizeResult p;
+        TetMesh m = run_method3(input, "smooth", po, p);
+        const std::string worse = worse_than(quality_stats(m, ""), r.before);
+        if (worse.empty()) {
+          data.tet = std::move(m);
+          polished = true;
+          r.method = "smooth";
+          r.iterations = p.iterations;
+          r.converged = p.converged;
+          r.notes.push_back(gentle ? "the polish's smoothing alone on the input (no flips, no "
+                                     "sliver repair) is kept instead"
+                                   : "the polish alone ('smooth') on the input is kept instead");
+        }
+      } catch (const InvariantError&) {
+      }
+    }
+    if (!polished) {
+      r.kept_input = true;
+      r.notes.push_back("the input is kept unchanged");
+    }
+  } else {
+    r.method = method;
+  }
+  r.after = quality_stats(data.tet, r.method);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -96,6 +96,20 @@ struct OptimizeOptions {
   std::function<BoundaryModel(const TetMesh&, const BoundaryModelOptions&)> boundary_model;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
+  // Never worse than the input: if the method's result has a lower Q_min or minimum angle
+  // (dihedral in 3D), a higher maximum angle, or fails to finish (a failure of the Delaunay
+  // rebuild), the polish alone (local, guarded operations: "smooth") is tried on the input, and
+  // if that is worse too the input is returned unchanged. OptimizeResult::notes says which.
+  bool never_worse = true;
+  // Coordinates are verified as a text writer stores them: the moved and new vertices are rounded
+  // to this many significant digits, and every tet must stay positive with all coordinates
+  // rounded (16: Gmsh's ASCII .msh; our writers use 17). 0 = full precision.
+  int output_digits = 16;
+  // Before a method that rebuilds the tetrahedralization (cvdt*: TetGen), the boundary is
+  // checked for self-intersections and coincident nodes (find_structural_defects.h); with
+  // defects the local operations alone run ("smooth") and the notes say where the defect is.
+  // Nodes closer than this fraction of the bounding-box diagonal count as coincident.
+  double coincident_tolerance = 1e-8;
   std::function<void(const OptimizeProgress&)> progress;
 };
 
@@ -118,6 +132,11 @@ struct OptimizeResult {
   double diagonal = 0;               // the input's bounding-box diagonal
   double volume_change = 0;          // largest relative change of a region's volume
   double tri_q_min_before = 0, tri_q_min_after = 0;  // worst boundary triangle Q
+  // What optimize() did besides the method: a fallback to local operations (structural
+  // defects), the input kept where the method would have made it worse, elements kept
+  // unchanged, ... One sentence each, for the summary.
+  std::vector<std::string> notes;
+  bool kept_input = false;  // the input is returned unchanged (see notes)
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces

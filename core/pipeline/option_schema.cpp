@@ -140,6 +140,11 @@ std::vector<OptionSpec> make_schema() {
                      "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = "
                      "none)",
                      kDim3));
+  // Issue 14 (robust branch): Python only for now; the CLI has --allow-worse (cmd_optimize.cpp).
+  v.push_back(boolean("never_worse", "", &O::never_worse,
+                      "never worse than the input: a result with a lower Q_min or min angle or a "
+                      "higher max angle falls back to the polish alone, or to the input",
+                      kDim23, kPython));
   v.push_back(boolean("verify", "", &O::verify,
                       "check the invariants of the result against the input (InvariantError)",
                       kDim23, 0));

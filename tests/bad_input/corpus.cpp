@@ -54,24 +54,6 @@ $Elements
 $EndElements
 )";
 
-// A tet (nodes 1-4) followed by a second volume element of type `type` on `nodes` more nodes
-// placed beyond x = 1 (the element's shape does not matter: its type is refused).
-std::string tet_and(int type, int nodes) {
-  std::string s =
-      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n"
-      "1 0 0 0 2 1 1 0 0\n$EndEntities\n$Nodes\n";
-  const int n = 4 + nodes;
-  s += "1 " + std::to_string(n) + " 1 " + std::to_string(n) + "\n3 1 0 " + std::to_string(n) + "\n";
-  for (int i = 1; i <= n; ++i) s += std::to_string(i) + "\n";
-  s += "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
-  for (int i = 0; i < nodes; ++i)
-    s += std::to_string(1 + (i & 1)) + " " + std::to_string((i >> 1) & 1) + " " +
-         std::to_string((i >> 2) & 1) + "\n";
-  s += "$EndNodes\n$Elements\n2 2 1 2\n3 1 4 1\n1 1 2 3 4\n3 1 " + std::to_string(type) + " 1\n2";
-  for (int i = 0; i < nodes; ++i) s += " " + std::to_string(5 + i);
-  return s + "\n$EndElements\n";
-}
-
 std::string second_order_tet() {
   return R"($MeshFormat
 4.1 0 8
@@ -233,9 +215,8 @@ std::vector<BadInputCase> bad_input_corpus() {
       one("ascii_flag_binary_body.msh",
           edit(tet, "0 0 0\n1 0 0\n", std::string("\x01\0\0\0\xff\xfe\x80\x3f\0\0\n", 12)),
           "nodes"),
-      one("hexahedron.msh", tet_and(5, 8), "Hexahedron"),
-      one("prism.msh", tet_and(6, 6), "Prism"),
-      one("pyramid.msh", tet_and(7, 5), "Pyramid"),
+      // Hexahedra, prisms and pyramids beside tets are kept verbatim since issue 14 (hybrid
+      // meshes: tests/robust/robust_inputs_test.cpp); a second-order tet is still refused.
       one("second_order.msh", second_order_tet(), "Tetrahedron 10"),
       one("inverted.msh", edit(tet, "1 1 2 3 4\n", "1 2 1 3 4\n"), "inverted"),
       one("zero_volume.msh", edit(tet, "0 0 1\n$EndNodes", "1 1 0\n$EndNodes"), "flat"),

@@ -102,7 +102,7 @@ TEST(OptimizeCli, TwoDimensionalCvtWithBasinHopping) {
       << log;
   ASSERT_EQ(testing::run(testing::cli_path() + " optimize " + pert + " -o " + out +
                              " --method cvdt --max-iterations 300 --tolerance 1e-7 --hops 2 "
-                             "--hop-amount 0.3 --seed 3 --lbfgs 5 --sizing uniform",
+                             "--hop-amount 0.3 --seed 3 --lbfgs 5 --sizing uniform --allow-worse",
                          &log),
             0)
       << log;

@@ -31,6 +31,7 @@ TEST(Optimize3d, EveryMethodKeepsRegionsInterfacesAndGroupsOfTheTwoRegionModel) 
     o.method = method;
     o.max_iterations = 6;
     o.fix_boundary = true;  // the free boundary: tests/boundary/
+    o.never_worse = false;  // each method itself, not the fallback (tests/robust/)
     const OptimizeResult r = optimize(d, o);  // runs verify_optimized (throws on a violation)
     EXPECT_EQ(r.method, method);
     EXPECT_TRUE(check_mesh(d.tet).ok) << method;

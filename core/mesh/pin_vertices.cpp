@@ -1,0 +1,38 @@
+#include "core/mesh/pin_vertices.h"
+
+#include <unordered_set>
+
+namespace cvtmesh {
+
+int pin_vertices(TetMesh& m) {
+  std::vector<char> pin(m.nb_vertices(), 0);
+  for (const ElementBlock& b : m.model.extra)
+    for (int v : b.nodes) pin[v] = 1;
+  if (!m.model.periodic.empty() && !m.node_tags.empty()) {
+    std::unordered_set<std::size_t> periodic;
+    for (const PeriodicLink& l : m.model.periodic) {
+      periodic.insert(l.node_tags.begin(), l.node_tags.end());
+      periodic.insert(l.master_node_tags.begin(), l.master_node_tags.end());
+    }
+    for (int v = 0; v < m.nb_vertices(); ++v)
+      if (periodic.count(m.node_tags[v])) pin[v] = 1;
+  }
+  int n = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    VertexClass& c = m.vclass[v];
+    if (!pin[v] || c.entity < 0) continue;
+    c = VertexClass{0, -1 - (4 * c.entity + c.dim)};
+    ++n;
+  }
+  return n;
+}
+
+void unpin_vertices(TetMesh& m) {
+  for (VertexClass& c : m.vclass)
+    if (c.entity < 0) {
+      const int x = -1 - c.entity;
+      c = VertexClass{static_cast<std::int8_t>(x % 4), x / 4};
+    }
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,287 @@
+// Regression tests for issue 14, one small model per class of real-world input that crashed or
+// was refused: a self-intersecting boundary, coincident nodes, orphan nodes, a surface bounding
+// no volume, a prism layer, an order-2 mesh, coordinates that must survive a 16-digit writer,
+// and the never-worse guarantee.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "core/geometry/round_coordinates.h"
+#include "core/io/read_mesh.h"
+#include "core/io/write_mesh.h"
+#include "core/mesh/check_mesh.h"
+#include "core/pipeline/find_structural_defects.h"
+#include "core/pipeline/optimize.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "core/quality/worse_than.h"
+#include "core/util/error.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+std::string write_geo(const std::string& name, const std::string& text) {
+  const std::string path = testing::temp_dir() + "/" + name + ".geo";
+  std::ofstream(path) << text;
+  return path;
+}
+
+bool has_note(const OptimizeResult& r, const std::string& word) {
+  for (const auto& n : r.notes)
+    if (n.find(word) != std::string::npos) return true;
+  return false;
+}
+
+OptimizeOptions quick(const std::string& method = "cvdt+swap+smooth") {
+  OptimizeOptions o;
+  o.method = method;
+  o.max_iterations = 5;
+  return o;
+}
+
+void expect_valid_and_no_worse(const MeshData& d, const OptimizeResult& r) {
+  const MeshCheck c = check_mesh(d.tet);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems.front());
+  EXPECT_EQ(worse_than(quality_stats(d.tet, ""), r.before), "");
+}
+
+// Two tets, one vertex each side of the other's face: their boundaries cross.
+TEST(StructuralDefects, FindsCrossingBoundaryTrianglesAndNotSeparateOnes) {
+  TetMesh a = testing::make_tet_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}});
+  auto two = [&](double shift) {
+    TetMesh m = a;
+    const int n = m.nb_vertices();
+    for (int v = 0; v < n; ++v)
+      m.xyz.insert(m.xyz.end(), {a.xyz[3 * v] + shift, a.xyz[3 * v + 1] + shift * 0.5,
+                                 a.xyz[3 * v + 2] + shift * 0.25});
+    for (int f = 0; f < a.nb_tris(); ++f) {
+      for (int k = 0; k < 3; ++k) m.tris.push_back(a.tris[3 * f + k] + n);
+      m.tri_surface.push_back(2);
+    }
+    return m;
+  };
+  EXPECT_FALSE(find_structural_defects(two(0.2)).intersecting_tris.empty());
+  EXPECT_TRUE(find_structural_defects(two(3.0)).empty());
+  const TetMesh m = two(0.2);
+  const auto lines = find_structural_defects(m).describe(m);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NE(lines.front().find("surface 2"), std::string::npos) << lines.front();
+}
+
+TEST(StructuralDefects, FindsCoincidentNodesOfPartsInContact) {
+  TetMesh m = testing::make_tet_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}});
+  // A second tet below the face z = 0, with its own copies of the face's three vertices.
+  m.xyz.insert(m.xyz.end(), {0, 0, 0, 1, 0, 0, 0, 1, 1e-12, 0.2, 0.2, -1});
+  EXPECT_TRUE(find_structural_defects(m).coincident_vertices.empty());  // unused copies
+  m.tris.insert(m.tris.end(), {4, 5, 6});
+  m.tri_surface.push_back(3);
+  const StructuralDefects d = find_structural_defects(m);
+  EXPECT_EQ(d.coincident_vertices.size(), 3u);
+  const auto lines = d.describe(m);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NE(lines.back().find("node"), std::string::npos);
+}
+
+// OCC boxes without a boolean: Gmsh meshes each volume on its own boundary.
+const char* kBox = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0,0,0,1,1,1};\n";
+
+TEST(RobustInputs, SelfIntersectingBoundaryIsOptimizedByLocalOperationsOnly) {
+  MeshData d = read_mesh(write_geo("overlap", std::string(kBox) +
+                                                  "Box(2) = {0.5,0.5,0.5,1,1,1};\n"
+                                                  "Mesh.MeshSizeMax = 0.3;\n"));
+  ASSERT_FALSE(find_structural_defects(d.tet).intersecting_tris.empty());
+  const OptimizeResult r = optimize(d, quick());
+  EXPECT_TRUE(has_note(r, "local operations only")) << (r.notes.empty() ? "" : r.notes[0]);
+  EXPECT_TRUE(has_note(r, "intersect"));
+  expect_valid_and_no_worse(d, r);
+}
+
+TEST(RobustInputs, CoincidentNodesOfTouchingPartsAreOptimizedWithoutRebuild) {
+  MeshData d = read_mesh(write_geo("touch", std::string(kBox) +
+                                                "Box(2) = {1,0,0,1,1,1};\n"
+                                                "Mesh.MeshSizeMax = 0.3;\n"));
+  ASSERT_FALSE(find_structural_defects(d.tet).coincident_vertices.empty());
+  const OptimizeResult r = optimize(d, quick("cvdt"));
+  EXPECT_TRUE(has_note(r, "coincide"));
+  expect_valid_and_no_worse(d, r);
+}
+
+TEST(RobustInputs, OrphanNodesAreNotPassedToTetgenAndAreKept) {
+  // A meshed wire away from the box and a CAD point duplicating a box corner.
+  MeshData d = read_mesh(write_geo("orphans", std::string(kBox) +
+                                                  "Point(100) = {2,0,0};\nPoint(101) = {3,0,0};\n"
+                                                  "Line(100) = {100,101};\nPoint(102) = {0,0,0};\n"
+                                                  "Mesh.MeshSizeMax = 0.3;\n"));
+  std::vector<char> used(d.tet.nb_vertices(), 0);
+  for (int v : d.tet.tets) used[v] = 1;
+  int orphans = 0;
+  for (char u : used) orphans += !u;
+  ASSERT_GT(orphans, 3);
+  const auto extra_before = d.tet.model.extra.size();
+  const OptimizeResult r = optimize(d, quick("cvdt"));
+  EXPECT_FALSE(has_note(r, "failed")) << (r.notes.empty() ? "" : r.notes.back());
+  EXPECT_EQ(d.tet.model.extra.size(), extra_before);
+  expect_valid_and_no_worse(d, r);
+}
+
+TEST(RobustInputs, SurfaceBoundingNoVolumeIsReadAndWrittenBackUnchanged) {
+  MeshData d = read_mesh(write_geo("loose", std::string(kBox) +
+                                                "Rectangle(50) = {2,0,0,1,1};\n"
+                                                "Mesh.MeshSizeMax = 0.3;\n"));
+  long loose = 0;
+  for (const auto& b : d.tet.model.extra)
+    if (b.dim == 2 && b.entity == 50) loose += static_cast<long>(b.tags.size());
+  ASSERT_GT(loose, 4);
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  const std::string out = testing::temp_dir() + "/loose.msh";
+  write_mesh(d, out);
+  const MeshData back = read_mesh(out);
+  long loose_back = 0;
+  for (const auto& b : back.tet.model.extra)
+    if (b.dim == 2 && b.entity == 50) loose_back += static_cast<long>(b.tags.size());
+  EXPECT_EQ(loose_back, loose);
+}
+
+// Tets on top of one layer of prisms (extruded with Recombine), conforming.
+const char* kPrismLayer =
+    "Point(1)={0,0,0,0.3};Point(2)={1,0,0,0.3};Point(3)={1,1,0,0.3};Point(4)={0,1,0,0.3};\n"
+    "Line(1)={1,2};Line(2)={2,3};Line(3)={3,4};Line(4)={4,1};\n"
+    "Curve Loop(1)={1,2,3,4};Plane Surface(1)={1};\n"
+    "a[] = Extrude{0,0,0.2}{Surface{1}; Layers{2}; Recombine;};\n"
+    "b[] = Extrude{0,0,0.8}{Surface{a[0]};};\n";
+
+TEST(RobustInputs, PrismLayerIsKeptWithItsVerticesAndTheTetsOptimized) {
+  MeshData d = read_mesh(write_geo("prisms", kPrismLayer));
+  long prisms = 0;
+  std::vector<int> prism_nodes;
+  for (const auto& b : d.tet.model.extra)
+    if (b.gmsh_type == 6) {
+      prisms += static_cast<long>(b.tags.size());
+      prism_nodes.insert(prism_nodes.end(), b.nodes.begin(), b.nodes.end());
+    }
+  ASSERT_GT(prisms, 10);
+  ASSERT_GT(d.tet.nb_tets(), 10);
+  std::vector<double> before;
+  std::vector<std::size_t> tags;
+  for (int v : prism_nodes) {
+    before.insert(before.end(), d.tet.point(v), d.tet.point(v) + 3);
+    tags.push_back(d.tet.node_tags[v]);
+  }
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  // Prism vertices unmoved (found by node tag: vertices may be renumbered).
+  std::size_t i = 0;
+  for (std::size_t k = 0; k < tags.size(); ++k)
+    for (int v = 0; v < d.tet.nb_vertices(); ++v)
+      if (d.tet.node_tags[v] == tags[k]) {
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(d.tet.point(v)[c], before[3 * k + c]);
+        ++i;
+        break;
+      }
+  EXPECT_EQ(i, tags.size());
+  // Written and read back: the prisms are still there, the interface is not written as triangles.
+  const std::string out = testing::temp_dir() + "/prisms.msh";
+  write_mesh(d, out);
+  const MeshData back = read_mesh(out);
+  long prisms_back = 0;
+  for (const auto& b : back.tet.model.extra)
+    if (b.gmsh_type == 6) prisms_back += static_cast<long>(b.tags.size());
+  EXPECT_EQ(prisms_back, prisms);
+  EXPECT_EQ(back.tet.nb_tris(), d.tet.nb_tris());
+}
+
+TEST(RobustInputs, SecondOrderMeshIsRefusedWithAHint) {
+  try {
+    read_mesh(write_geo("order2", std::string(kBox) + "Mesh.MeshSizeMax = 0.5;\n"
+                                                      "Mesh.ElementOrder = 2;\n"));
+    FAIL() << "an order-2 mesh was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("-order 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(RobustInputs, OutputCoordinatesAreThoseA16DigitWriterStores) {
+  MeshData d = read_mesh(write_geo("box", std::string(kBox) + "Mesh.MeshSizeMax = 0.3;\n"));
+  const MeshData in = d;
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  // Moved and new vertices hold what a 16-digit writer stores; fixed ones are untouched.
+  int unrounded = 0, free = 0;
+  for (int v = 0; v < d.tet.nb_vertices(); ++v)
+    if (d.tet.vclass[v].dim == 3) {
+      ++free;
+      for (int c = 0; c < 3; ++c) unrounded += d.tet.point(v)[c] != round_to_digits(d.tet.point(v)[c], 16);
+    }
+  EXPECT_GT(free, 10);
+  EXPECT_EQ(unrounded, 0);
+  EXPECT_NO_THROW(verify_optimized(in.tet, d.tet));  // boundary vertices exactly as they came
+  // The rounding itself: 0.1 + 0.2 is 0.30000000000000004 in memory, 0.3 once written.
+  EXPECT_EQ(round_to_digits(0.1 + 0.2, 16), 0.3);
+  EXPECT_NE(0.1 + 0.2, 0.3);
+}
+
+TEST(RobustInputs, PeriodicPairIsKeptWithItsNodesFixed) {
+  MeshData d = read_mesh(write_geo("periodic", std::string(kBox) +
+                                                   "Periodic Surface{2} = {1} Translate{1,0,0};\n"
+                                                   "Mesh.MeshSizeMax = 0.3;\n"));
+  ASSERT_FALSE(d.tet.model.periodic.empty());
+  std::size_t pairs = 0;
+  for (const auto& l : d.tet.model.periodic) pairs += l.node_tags.size();
+  ASSERT_GT(pairs, 10u);
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  for (const bool binary : {false, true}) {
+    const char* version = binary ? "binary 4.1" : "4.1";
+    WriteOptions w;
+    w.binary = binary;
+    const std::string out = testing::temp_dir() + "/periodic.msh";
+    write_mesh(d, out, w);
+    const MeshData back = read_mesh(out);
+    std::size_t pairs_back = 0;
+    for (const auto& l : back.tet.model.periodic) pairs_back += l.node_tags.size();
+    EXPECT_EQ(pairs_back, pairs) << version;
+    EXPECT_TRUE(check_mesh(back.tet).ok) << version;
+  }
+}
+
+TEST(RobustInputs, OutputTakesTheInputsMshVersionAndMode) {
+  MeshData d = read_mesh(write_geo("box22", std::string(kBox) + "Mesh.MeshSizeMax = 0.4;\n"));
+  const std::string dir = testing::temp_dir();
+  WriteOptions w;
+  w.msh_version = 2.2;
+  write_mesh(d, dir + "/in22.msh", w);
+  w.msh_version = 4.1;
+  w.binary = true;
+  write_mesh(d, dir + "/in41b.msh", w);
+  std::string log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " convert " + dir + "/in22.msh " + dir +
+                             "/out22.msh && " + testing::cli_path() + " convert " + dir +
+                             "/in41b.msh " + dir + "/out41b.msh",
+                         &log),
+            0)
+      << log;
+  std::string head;
+  testing::run("head -c 40 " + dir + "/out22.msh", &head);
+  EXPECT_NE(head.find("2.2 0"), std::string::npos) << head;
+  testing::run("head -c 40 " + dir + "/out41b.msh", &head);
+  EXPECT_NE(head.find("4.1 1"), std::string::npos) << head;
+}
+
+TEST(RobustInputs, WorseThanNamesTheMeasureThatGotWorse) {
+  QualityStats a, b;
+  a.q_min = 0.2;
+  b.q_min = 0.3;
+  a.min_angle = b.min_angle = 10;
+  a.max_angle = b.max_angle = 150;
+  EXPECT_NE(worse_than(a, b).find("Q_min"), std::string::npos);
+  EXPECT_EQ(worse_than(b, a), "");
+  a.q_min = 0.3;
+  a.max_angle = 160;
+  EXPECT_NE(worse_than(a, b).find("max"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cvtmesh
