@@ -3,10 +3,14 @@
 #include <gmsh.h>
 
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
+#include "core/io/geo_scan.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/process_guard.h"
+#include "core/io/read_mesh.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -110,12 +114,24 @@ void gui_finalize() {
   gmsh::finalize();
 }
 
-void gui_open(const std::string& path) {
+void gui_open(const std::string& path, bool allow_system_calls) {
   // Gmsh would silently start a new, empty model for a missing file.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError("cannot open '" + path + "': no such file");
-  gmsh_checked("cannot open '" + path + "'", [&] { gmsh::open(path); });
+  // A script that would start programs is refused as by the CLI (core/io/geo_scan.h).
+  if (!allow_system_calls && gmsh_parses_as_script(file_extension(path))) {
+    const auto findings = scan_geo_for_processes(path);
+    if (!findings.empty()) throw InputError(geo_scan_message(findings));
+  }
+  gmsh_checked("cannot open '" + path + "'", [&] {
+    std::optional<ProcessGuard> guard;
+    if (!allow_system_calls) guard.emplace();
+    gmsh::open(path);
+    if (guard && !guard->refused().empty())
+      throw InputError("'" + path + "': Gmsh was asked to run '" + guard->refused().front() +
+                       "'; refused (cvtmesh-gui --allow-system-calls allows it)");
+  });
 }
 
 int gui_model_dim() {

@@ -68,7 +68,9 @@ void gui_initialize(const std::vector<std::string>& args);
 void gui_finalize();
 // Opens a model or mesh file as the current model (gmsh::open). Throws InputError (also for a
 // missing file, which Gmsh itself would silently take as a new model).
-void gui_open(const std::string& path);
+// A script that would start a program (SystemCall, OnelabRun, ... in it or what it includes) is
+// refused with InputError naming the file, line and command unless allow_system_calls.
+void gui_open(const std::string& path, bool allow_system_calls = false);
 // The dimension of the current model (its highest entity dimension), -1 if empty.
 int gui_model_dim();
 // Sets the big Run button of the ONELAB panel: pressing it sets ONELAB/Action to `action`.

@@ -37,6 +37,7 @@ struct Args {
   plugin::PanelPreset preset;
   bool show_quality = false;
   bool run_on_start = false;
+  bool allow_system_calls = false;
   std::string result_json;
   std::optional<double> exit_after_run;
   std::vector<std::string> gmsh_args;
@@ -72,6 +73,9 @@ int parse(int argc, char** argv, Args& a) {
   app.add_flag("--show-quality", a.show_quality,
                "show the quality of the model's mesh on start (meshing it if needed)");
   app.add_flag("--run-on-start", a.run_on_start, "press Run once the window is up");
+  app.add_flag("--allow-system-calls", a.allow_system_calls,
+               "let MODEL (a .geo and what it includes) run programs (SystemCall, OnelabRun); "
+               "refused by default, with the file, line and command in the message console");
   app.add_option("--result-json", a.result_json,
                  "after each action, write its outcome to FILE (JSON: {\"action\": "
                  "\"optimize\"|\"quality\", \"result\"|\"error\": ...})")
@@ -306,7 +310,7 @@ int main(int argc, char** argv) {
     // An unreadable model is reported in the message console; the GUI still opens.
     if (!args.model.empty()) {
       try {
-        gui_open(args.model);
+        gui_open(args.model, args.allow_system_calls);
       } catch (const std::exception& e) {
         LocalOnelab().error(std::string("cvtmesh: ") + e.what());
       }
