@@ -6,8 +6,14 @@ namespace cvtmesh {
 
 int pin_vertices(TetMesh& m) {
   std::vector<char> pin(m.nb_vertices(), 0);
+  // Points and lines (Gmsh's curves, dim < 2) lie on the boundary's corners and curves, which the
+  // classification already holds (a free boundary slides curve vertices along them, and the line
+  // elements follow); only their vertices off every boundary triangle (an embedded curve) are
+  // pinned. Every vertex of a kept cell, quadrangle or loose triangle is.
+  std::vector<char> on_boundary(m.nb_vertices(), 0);
+  for (int v : m.tris) on_boundary[v] = 1;
   for (const ElementBlock& b : m.model.extra)
-    for (int v : b.nodes) pin[v] = 1;
+    for (int v : b.nodes) pin[v] |= b.dim >= 2 || !on_boundary[v];
   if (!m.model.periodic.empty() && !m.node_tags.empty()) {
     std::unordered_set<std::size_t> periodic;
     for (const PeriodicLink& l : m.model.periodic) {

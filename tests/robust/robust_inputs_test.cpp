@@ -17,6 +17,7 @@
 #include "core/quality/quality_stats.h"
 #include "core/quality/worse_than.h"
 #include "core/util/error.h"
+#include "core/mesh/pin_vertices.h"
 #include "tests/support/test_meshes.h"
 
 namespace cvtmesh {
@@ -283,6 +284,47 @@ TEST(RobustInputs, WorseThanNamesTheMeasureThatGotWorse) {
   a.q_min = 0.3;
   a.max_angle = 160;
   EXPECT_NE(worse_than(a, b).find("max"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// Gmsh's line elements lie on the boundary's curves: pinning them would freeze every curve
+// vertex of a free boundary (the femur's 173 curve vertices). Only kept cells and lines off the
+// boundary triangles are pinned.
+TEST(PinVertices, LinesOnTheBoundaryStayFreeCellsArePinned) {
+  TetMesh m = testing::make_tet_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.2}},
+                                     {{0, 1, 2, 4}, {0, 1, 4, 3}, {0, 4, 2, 3}, {4, 1, 2, 3}}, {4});
+  m.vclass[0] = {1, 7};
+  m.vclass[1] = {1, 7};
+  ElementBlock line;
+  line.dim = 1;
+  line.entity = 7;
+  line.gmsh_type = 1;
+  line.tags = {1};
+  line.nodes = {0, 1};
+  m.model.extra.push_back(line);
+  EXPECT_EQ(pin_vertices(m), 0);
+  ElementBlock embedded = line;  // a line through the interior vertex
+  embedded.nodes = {4, 3};
+  m.model.extra.push_back(embedded);
+  EXPECT_EQ(pin_vertices(m), 1);
+  EXPECT_EQ(m.vclass[4].dim, 0);
+  unpin_vertices(m);
+  EXPECT_EQ(m.vclass[4].dim, 3);
+  ElementBlock prism;
+  prism.dim = 3;
+  prism.gmsh_type = 6;
+  prism.tags = {2};
+  prism.nodes = {0, 1, 2, 3, 4, 0};
+  m.model.extra = {prism};
+  EXPECT_EQ(pin_vertices(m), 5);
+  unpin_vertices(m);
+  EXPECT_EQ(m.vclass[0].dim, 1);
+  EXPECT_EQ(m.vclass[0].entity, 7);
 }
 
 }  // namespace
