@@ -235,6 +235,7 @@ void register_bench(CLI::App& app) {
                OptimizeOptions o = *opt;
                o.method = m;
                o.progress = nullptr;
+               o.never_worse = false;  // the method itself is timed, not a fallback
                if (omega > 0) o.relaxation = omega;
                if (anderson >= 0) o.anderson_depth = anderson;
                if (lbfgs >= 0) o.lbfgs_memory = lbfgs;
