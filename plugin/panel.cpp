@@ -71,9 +71,9 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   const std::vector<std::string> all = all_methods();
   const std::vector<std::string> here = methods_for_dim(dim);
 
-  OnelabParam method = input(kMethod, 0,
-                             "Du & Wang's methods for " + std::to_string(dim) + "D meshes:\n" +
-                                 methods_help(dim));
+  OnelabParam method =
+      input(kMethod, 0,
+            "Du & Wang's methods for " + std::to_string(dim) + "D meshes:\n" + methods_help(dim));
   for (const auto& m : here) {
     const auto code = std::find(all.begin(), all.end(), m) - all.begin();
     method.choices.push_back(static_cast<double>(code));
@@ -108,7 +108,8 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   }
 
   std::string step_help = "CVT (Lloyd) step:";
-  for (const OptionPreset& p : lloyd_step_presets()) step_help += " " + p.name + " = " + p.help + ";";
+  for (const OptionPreset& p : lloyd_step_presets())
+    step_help += " " + p.name + " = " + p.help + ";";
   OnelabParam step = input(kStep, 0, step_help);
   for (std::size_t i = 0; i < lloyd_step_presets().size(); ++i) {
     step.choices.push_back(static_cast<double>(i));
@@ -185,7 +186,8 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
     if (auto v = tree.number(param_name(s))) set_number(s, o.optimize, *v);
   }
   const std::vector<std::string> sizings = panel_sizings();
-  const auto k = static_cast<std::size_t>(std::lround(tree.number(param_name(spec("sizing"))).value_or(0)));
+  const auto k =
+      static_cast<std::size_t>(std::lround(tree.number(param_name(spec("sizing"))).value_or(0)));
   o.optimize.sizing = sizings[std::min(k, sizings.size() - 1)];
   o.quality_views = tree.number(kViews).value_or(1) != 0;
   o.dim = dim ? dim : -1;

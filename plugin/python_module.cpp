@@ -28,7 +28,6 @@ py::object json_loads(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
-
 // The options given as keyword arguments, set by the option schema (core/pipeline/option_schema.h):
 // names, types and defaults come from there, and optimize() validates the values, so a bad one is
 // refused with the same OptionError (cvtmesh.InputError) as on the CLI and in the GUI panel.
@@ -88,9 +87,10 @@ std::string optimize_doc() {
   for (const OptionSpec& s : option_schema())
     if (s.fronts & kPython) d += "  " + s.name + ": " + describe(s) + "\n";
   d += "\nMethods:\n" + methods_help();
-  d += "\nReturns the paper's table as a dict: method, dim, iterations, converged, seconds, views,\n"
-       "before and after (number_of_elements, Q bins, q_min, average_quality, bad/good %,\n"
-       "dihedral/planar angles, average_radius_ratio).";
+  d +=
+      "\nReturns the paper's table as a dict: method, dim, iterations, converged, seconds, views,\n"
+      "before and after (number_of_elements, Q bins, q_min, average_quality, bad/good %,\n"
+      "dihedral/planar angles, average_radius_ratio).";
   return d;
 }
 

@@ -37,7 +37,8 @@ HausdorffDistance boundary_hausdorff(const TetMesh& m, const BoundaryGeometry& g
     const TriangleSetDistance now(m.xyz, m.tris);
     const long ns = static_cast<long>(ref.size() / 3);
 #pragma omp parallel for schedule(static) reduction(max : from_reference)
-    for (long i = 0; i < ns; ++i) from_reference = std::max(from_reference, now.distance(&ref[3 * i]));
+    for (long i = 0; i < ns; ++i)
+      from_reference = std::max(from_reference, now.distance(&ref[3 * i]));
   }
   h.to_reference = to_reference;
   h.from_reference = from_reference;

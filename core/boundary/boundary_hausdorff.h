@@ -9,8 +9,9 @@
 namespace cvtmesh {
 
 struct HausdorffDistance {
-  double to_reference = 0;    // max over the new boundary's samples of the distance to the reference
-  double from_reference = 0;  // max over the reference's samples of the distance to the new boundary
+  double to_reference = 0;  // max over the new boundary's samples of the distance to the reference
+  double from_reference =
+      0;  // max over the reference's samples of the distance to the new boundary
   double value() const { return to_reference > from_reference ? to_reference : from_reference; }
 };
 

@@ -36,8 +36,8 @@ std::pair<double, double> star_minima(const TetMesh& m, const VertexTets& star,
   double q = 1, t = 1;
   for (const int* s = star.begin_of(v); s != star.end_of(v); ++s) {
     const int* w = &m.tets[4 * static_cast<std::size_t>(*s)];
-    q = std::min(q, tet_quality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]),
-                                Measure::kQ));
+    q = std::min(
+        q, tet_quality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]), Measure::kQ));
   }
   for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f) {
     const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];

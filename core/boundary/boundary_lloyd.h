@@ -39,10 +39,10 @@ struct BoundaryLloydOptions {
 };
 
 struct BoundaryLloydStats {
-  int rounds = 0;          // accepted rounds
-  int nb_undone = 0;       // rounds undone (energy rose)
-  long nb_moved = 0;       // accepted boundary vertex moves, over the accepted rounds
-  long nb_refused = 0;     // boundary moves refused by plan_boundary_move
+  int rounds = 0;              // accepted rounds
+  int nb_undone = 0;           // rounds undone (energy rose)
+  long nb_moved = 0;           // accepted boundary vertex moves, over the accepted rounds
+  long nb_refused = 0;         // boundary moves refused by plan_boundary_move
   std::vector<double> energy;  // CVT energy at the start and after each accepted round
 };
 

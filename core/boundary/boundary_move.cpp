@@ -37,7 +37,8 @@ PlannedBoundaryMove plan_boundary_move(const TetMesh& m, const BoundaryModel& mo
       return plan;
     }
   }
-  if (std::isfinite(hausdorff) && !fan_within_tolerance(m, model, fans, v, plan.position, hausdorff)) {
+  if (std::isfinite(hausdorff) &&
+      !fan_within_tolerance(m, model, fans, v, plan.position, hausdorff)) {
     plan.status = BoundaryMoveStatus::kTooFar;
     return plan;
   }
@@ -67,8 +68,8 @@ bool fan_within_tolerance(const TetMesh& m, const BoundaryModel& model, const Bo
   return true;
 }
 
-bool fan_covers_input(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans,
-                      int u, int v, const double* position, double hausdorff) {
+bool fan_covers_input(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans, int u,
+                      int v, const double* position, double hausdorff) {
   if (model.input_xyz.size() < 3 * static_cast<std::size_t>(u) + 3) return true;
   const double* p0 = &model.input_xyz[3 * static_cast<std::size_t>(u)];
   auto at = [&](int w) { return w == v ? position : m.point(w); };

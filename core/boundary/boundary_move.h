@@ -16,10 +16,10 @@ namespace cvtmesh {
 
 enum class BoundaryMoveStatus {
   kOk = 0,
-  kNotMovable,  // interior, corner, locked or periodic vertex
+  kNotMovable,    // interior, corner, locked or periodic vertex
   kNoProjection,  // the reference geometry could not project the point
-  kInverted,    // a tet of the star would be inverted or flat
-  kTooFar,      // a fan triangle would leave the Hausdorff tolerance
+  kInverted,      // a tet of the star would be inverted or flat
+  kTooFar,        // a fan triangle would leave the Hausdorff tolerance
 };
 
 struct PlannedBoundaryMove {

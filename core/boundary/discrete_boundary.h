@@ -15,10 +15,10 @@
 
 namespace cvtmesh {
 
-
 // Built from the input mesh (its boundary triangles, tri_surface and vclass). The geometry keeps
 // its own copy of what it needs. Throws std::invalid_argument for a negative feature angle.
-BoundaryModel make_discrete_boundary(const TetMesh& input, const BoundaryModelOptions& options = {});
+BoundaryModel make_discrete_boundary(const TetMesh& input,
+                                     const BoundaryModelOptions& options = {});
 
 // The bounding-box diagonal of a mesh's vertices.
 double bounding_box_diagonal(const TetMesh& mesh);

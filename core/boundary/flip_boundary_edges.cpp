@@ -54,7 +54,6 @@ bool triangles_within(const TetMesh& m, const BoundaryModel& model, int a, int c
   return true;
 }
 
-
 }  // namespace
 
 BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
@@ -185,7 +184,8 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
             std::array<int, 4> t{u, v, w, apex};
             if (orient3d(mesh.point(u), mesh.point(v), mesh.point(w), mesh.point(apex)) < 0)
               std::swap(t[1], t[2]);
-            if (orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])) <= 0) {
+            if (orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])) <=
+                0) {
               valid = false;
               break;
             }

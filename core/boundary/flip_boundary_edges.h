@@ -21,8 +21,8 @@
 namespace cvtmesh {
 
 struct BoundaryFlipOptions {
-  double flat_angle = 15;   // degrees between the two triangles' normals, at most
-  double tri_below = 0.6;   // try the edges of the boundary triangles with Q below this
+  double flat_angle = 15;  // degrees between the two triangles' normals, at most
+  double tri_below = 0.6;  // try the edges of the boundary triangles with Q below this
   double min_gain = 1e-3;
   int passes = 3;
   double hausdorff = std::numeric_limits<double>::infinity();  // absolute

@@ -184,7 +184,8 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
           if (!(best > 1e-9 * lmin)) break;
         }
         auto tangential = [&](const Vec3& g) {
-          return role.role == BoundaryRole::kSurface ? g - dot(g, axis) * axis : dot(g, axis) * axis;
+          return role.role == BoundaryRole::kSurface ? g - dot(g, axis) * axis
+                                                     : dot(g, axis) * axis;
         };
         for (Vec3& g : fg) g = tangential(g);
         cand.clear();
@@ -213,7 +214,8 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
         double alpha = 0.2 * lmin / std::sqrt(slope);
         for (const auto& [value, grad] : cand) {
           const double sj = dot(grad, d);
-          if (sj < slope && value > fmin + band) alpha = std::min(alpha, (value - fmin) / (slope - sj));
+          if (sj < slope && value > fmin + band)
+            alpha = std::min(alpha, (value - fmin) / (slope - sj));
         }
         bool accepted = false;
         const Vec3 here = vec3(P);

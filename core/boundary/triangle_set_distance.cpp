@@ -49,7 +49,9 @@ TriangleSetDistance::TriangleSetDistance(const std::vector<double>& xyz,
 
 TriangleSetDistance::~TriangleSetDistance() = default;
 
-bool TriangleSetDistance::empty() const { return impl_->triangles.empty(); }
+bool TriangleSetDistance::empty() const {
+  return impl_->triangles.empty();
+}
 
 bool TriangleSetDistance::closest(const double* p, double* q) const {
   if (impl_->triangles.empty()) return false;
@@ -88,7 +90,9 @@ SegmentSetDistance::SegmentSetDistance(const std::vector<double>& xyz,
 
 SegmentSetDistance::~SegmentSetDistance() = default;
 
-bool SegmentSetDistance::empty() const { return impl_->segments.empty(); }
+bool SegmentSetDistance::empty() const {
+  return impl_->segments.empty();
+}
 
 bool SegmentSetDistance::closest(const double* p, double* q) const {
   if (impl_->segments.empty()) return false;
@@ -106,8 +110,9 @@ double point_triangle_distance(const double* p, const double* a, const double* b
   if (t.is_degenerate()) {
     double best = std::numeric_limits<double>::infinity();
     for (const double* x : {a, b, c})
-      best = std::min(best, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
-                                      (p[2] - x[2]) * (p[2] - x[2])));
+      best =
+          std::min(best, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
+                                   (p[2] - x[2]) * (p[2] - x[2])));
     return best;
   }
   return std::sqrt(CGAL::to_double(CGAL::squared_distance(q, t)));

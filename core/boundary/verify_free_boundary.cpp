@@ -39,8 +39,8 @@ FreeBoundaryReport verify_free_boundary(const TetMesh& before, const TetMesh& af
   for (int v = 0; v < nv; ++v) {
     if (before.vclass[v].dim == 3) continue;
     const double* p = after.point(v);
-    const bool moved = p[0] != before.point(v)[0] || p[1] != before.point(v)[1] ||
-                       p[2] != before.point(v)[2];
+    const bool moved =
+        p[0] != before.point(v)[0] || p[1] != before.point(v)[1] || p[2] != before.point(v)[2];
     if (!moved) continue;
     if (!model.movable(v))
       throw InvariantError("fixed boundary vertex " + std::to_string(v) + " moved");
@@ -59,8 +59,8 @@ FreeBoundaryReport verify_free_boundary(const TetMesh& before, const TetMesh& af
   r.hausdorff = boundary_hausdorff(after, *model.geometry);
   if (tol.hausdorff > 0 && r.hausdorff.value() > tol.hausdorff)
     throw InvariantError("the boundary moved farther than the Hausdorff tolerance (" +
-                         str(r.hausdorff.value()) + " > " + str(tol.hausdorff) +
-                         "; new to input " + str(r.hausdorff.to_reference) + ", input to new " +
+                         str(r.hausdorff.value()) + " > " + str(tol.hausdorff) + "; new to input " +
+                         str(r.hausdorff.to_reference) + ", input to new " +
                          str(r.hausdorff.from_reference) + ")");
   const auto vb = region_volumes_of(before), va = region_volumes_of(after);
   for (std::size_t i = 0; i < vb.size() && i < va.size(); ++i) {

@@ -24,7 +24,7 @@ struct FreeBoundaryReport {
   double max_off_entity = 0;  // absolute distance of a moved vertex to its entity
   HausdorffDistance hausdorff;
   double diagonal = 0;
-  double max_volume_change = 0;  // relative, over the regions
+  double max_volume_change = 0;                      // relative, over the regions
   double tri_q_min_before = 0, tri_q_min_after = 0;  // worst boundary triangle Q
 };
 

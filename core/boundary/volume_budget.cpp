@@ -46,8 +46,8 @@ bool VolumeBudget::admits(const TetMesh& m, const VertexTets& star, int v, const
       p[k] = m.point(w[k]);
       p_new[k] = w[k] == v ? q : p[k];
     }
-    const double d = tet_volume(p_new[0], p_new[1], p_new[2], p_new[3]) -
-                     tet_volume(p[0], p[1], p[2], p[3]);
+    const double d =
+        tet_volume(p_new[0], p_new[1], p_new[2], p_new[3]) - tet_volume(p[0], p[1], p[2], p[3]);
     for (std::size_t i = 0; i < region.size(); ++i)
       if (region[i] == m.tet_region[*t]) delta[i] += d;
   }

@@ -17,9 +17,9 @@ namespace cvtmesh {
 std::vector<std::pair<int, double>> region_volumes_of(const TetMesh& mesh);
 
 struct VolumeBudget {
-  std::vector<int> region;      // region tags
-  std::vector<double> volume;   // their volumes at the start
-  std::vector<double> change;   // running signed change
+  std::vector<int> region;                                     // region tags
+  std::vector<double> volume;                                  // their volumes at the start
+  std::vector<double> change;                                  // running signed change
   double tolerance = std::numeric_limits<double>::infinity();  // relative
 
   // Per region of the mesh (region_volumes).

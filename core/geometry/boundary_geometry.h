@@ -65,9 +65,9 @@ struct BoundaryModel {
 
 // What the builders of a BoundaryModel are told.
 struct BoundaryModelOptions {
-  double feature_angle = 40;          // degrees: a sharper turn across an edge is a feature
-  std::vector<int> locked_surfaces;   // Gmsh surface tags whose vertices stay fixed
-  std::vector<int> locked_curves;     // Gmsh curve tags whose vertices stay fixed
+  double feature_angle = 40;         // degrees: a sharper turn across an edge is a feature
+  std::vector<int> locked_surfaces;  // Gmsh surface tags whose vertices stay fixed
+  std::vector<int> locked_curves;    // Gmsh curve tags whose vertices stay fixed
   // Gmsh's curves and points where the surface is smooth (no turn above feature_angle across
   // them, e.g. the patch boundaries of a reparametrized STL) are not features: the patches on
   // both sides are one, and their vertices move on it (their triangles keep their surface tags;

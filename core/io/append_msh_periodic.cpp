@@ -14,7 +14,9 @@ void append_msh_periodic(const std::string& path, const std::vector<PeriodicLink
   if (links.empty() || msh_version < 3) return;
   std::ofstream f(path, std::ios::binary | std::ios::app);
   if (!f) throw OutputError("cannot write '" + path + "': cannot append the $Periodic section");
-  auto text = [&](const std::string& s) { f.write(s.data(), static_cast<std::streamsize>(s.size())); };
+  auto text = [&](const std::string& s) {
+    f.write(s.data(), static_cast<std::streamsize>(s.size()));
+  };
   char buf[64];
   auto num = [&](double x) {
     std::snprintf(buf, sizeof buf, "%.16g", x);

@@ -75,8 +75,7 @@ std::vector<Token> lex(const std::string& s) {
   return out;
 }
 
-const std::set<std::string> kProcessCommands = {"SystemCall", "NonBlockingSystemCall",
-                                                "OnelabRun"};
+const std::set<std::string> kProcessCommands = {"SystemCall", "NonBlockingSystemCall", "OnelabRun"};
 
 class Scanner {
  public:
@@ -108,16 +107,16 @@ class Scanner {
       } else if (t.text == "Solver" && i + 2 < toks.size() && toks[i + 1].text == "." &&
                  toks[i + 2].kind == Token::kIdent &&
                  toks[i + 2].text.rfind("Executable", 0) == 0) {
-        findings_.push_back({path, t.line, "Solver." + toks[i + 2].text,
-                             "registers a program for Gmsh to run: " +
-                                 statement_text(toks, i + 3)});
+        findings_.push_back(
+            {path, t.line, "Solver." + toks[i + 2].text,
+             "registers a program for Gmsh to run: " + statement_text(toks, i + 3)});
       } else if (t.text == "Include" || t.text == "Merge" || t.text == "MergeWithBoundingBox") {
         std::size_t j = i + 1;
         std::string name;
         if (!eval(toks, j, dir, key, name)) {
-          findings_.push_back({path, t.line, t.text,
-                               "a computed file name the scan cannot follow: " +
-                                   statement_text(toks, i + 1)});
+          findings_.push_back(
+              {path, t.line, t.text,
+               "a computed file name the scan cannot follow: " + statement_text(toks, i + 1)});
           continue;
         }
         if (!name.empty() && name[0] != '/') name = dir + name;
@@ -126,7 +125,8 @@ class Scanner {
           scan_file(name, depth + 1);
           scan_file(name + ".opt", depth + 1);
         }
-      } else if (i + 2 < toks.size() && toks[i + 1].text == "=" && !(i > 0 && toks[i - 1].text == ".")) {
+      } else if (i + 2 < toks.size() && toks[i + 1].text == "=" &&
+                 !(i > 0 && toks[i - 1].text == ".")) {
         // A string variable: name = <string expr>; or name = DefineString[<string expr>, ...];
         std::size_t j = i + 2;
         std::string value;
@@ -228,11 +228,11 @@ bool gmsh_parses_as_script(const std::string& extension) {
   std::string e;
   for (char c : extension) e += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   static const std::set<std::string> data = {
-      ".msh", ".stl", ".step", ".stp", ".brep", ".brp", ".iges", ".igs", ".unv", ".vtk", ".vtu",
-      ".mesh", ".bdf", ".nas", ".p3d", ".ply", ".ply2", ".med", ".rmed", ".mmed", ".inp", ".off",
-      ".obj", ".x3d", ".wrl", ".vrml", ".cgns", ".diff", ".neu", ".png", ".jpg", ".jpeg", ".bmp",
-      ".pnm", ".ppm", ".pgm", ".pbm", ".mpg", ".pdf", ".svg", ".xyz", ".node", ".ele", ".tet",
-      ".dat", ".txt", ".csv"};
+      ".msh", ".stl",  ".step", ".stp", ".brep", ".brp",  ".iges", ".igs",  ".unv",  ".vtk",
+      ".vtu", ".mesh", ".bdf",  ".nas", ".p3d",  ".ply",  ".ply2", ".med",  ".rmed", ".mmed",
+      ".inp", ".off",  ".obj",  ".x3d", ".wrl",  ".vrml", ".cgns", ".diff", ".neu",  ".png",
+      ".jpg", ".jpeg", ".bmp",  ".pnm", ".ppm",  ".pgm",  ".pbm",  ".mpg",  ".pdf",  ".svg",
+      ".xyz", ".node", ".ele",  ".tet", ".dat",  ".txt",  ".csv"};
   return !data.count(e);
 }
 

@@ -1,6 +1,7 @@
-// Refusing .geo scripts that start processes, before Gmsh parses them (issue 18; docs/reliability.md,
-// "Security"). Gmsh's .geo language can run programs (SystemCall, NonBlockingSystemCall,
-// OnelabRun) and pull in further files that can (Include, Merge of a script, the file's own
+// Refusing .geo scripts that start processes, before Gmsh parses them (issue 18;
+// docs/reliability.md, "Security"). Gmsh's .geo language can run programs (SystemCall,
+// NonBlockingSystemCall, OnelabRun) and pull in further files that can (Include, Merge of a script,
+// the file's own
 // `<file>.opt`), and Gmsh 4.8 has no option to forbid it. The scan follows Gmsh's lexical rules
 // (// and /* */ comments, "strings" with backslash escapes, identifiers are case-sensitive) and
 // resolves the file names of Include/Merge as Gmsh does: string literals, CurrentDir,
@@ -26,7 +27,8 @@ struct GeoScanFinding {
 // Returns every finding (empty: nothing starts a process). Unreadable included files are findings
 // too (Gmsh would fail on them anyway).
 std::vector<GeoScanFinding> scan_geo_for_processes(
-    const std::string& path, const std::vector<std::pair<std::string, std::string>>& set_strings = {});
+    const std::string& path,
+    const std::vector<std::pair<std::string, std::string>>& set_strings = {});
 
 // True if Gmsh parses a file of this extension (".geo", "" or any extension Gmsh does not read as
 // data: Gmsh falls back to its script parser) as a script; false for mesh/CAD/image data.

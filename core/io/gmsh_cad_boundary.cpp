@@ -15,7 +15,7 @@ namespace {
 
 class GmshCadGeometry final : public BoundaryGeometry {
  public:
-  std::vector<int> surfaces;     // every surface tag of the model
+  std::vector<int> surfaces;      // every surface tag of the model
   std::vector<double> reference;  // samples of the input boundary, projected on the CAD
 
   bool closest(int dim, int tag, const double* p, double* q) const {
@@ -42,9 +42,9 @@ class GmshCadGeometry final : public BoundaryGeometry {
     for (int s : surfaces) {
       double q[3];
       if (closest(2, s, p, q))
-        best = std::min(best, std::sqrt((p[0] - q[0]) * (p[0] - q[0]) +
-                                        (p[1] - q[1]) * (p[1] - q[1]) +
-                                        (p[2] - q[2]) * (p[2] - q[2])));
+        best =
+            std::min(best, std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                     (p[2] - q[2]) * (p[2] - q[2])));
     }
     return best;
   }
@@ -146,7 +146,8 @@ BoundaryModel make_gmsh_cad_boundary(const TetMesh& m, const BoundaryModelOption
     double c[3];
     for (int d = 0; d < 3; ++d) c[d] = (m.point(w[0])[d] + m.point(w[1])[d] + m.point(w[2])[d]) / 3;
     double q[3];
-    if (g->closest_on_surface(m.tri_surface[f], c, q)) g->reference.insert(g->reference.end(), q, q + 3);
+    if (g->closest_on_surface(m.tri_surface[f], c, q))
+      g->reference.insert(g->reference.end(), q, q + 3);
     g->reference.insert(g->reference.end(), m.point(w[0]), m.point(w[0]) + 3);
   }
   out.geometry = g;

@@ -1,8 +1,9 @@
 // The CAD reference geometry of the current Gmsh model (BoundaryGeometry through the Gmsh SDK:
 // gmsh::model::getClosestPoint: the kernel's orthogonal projection; in 4.8.4 the parameters it
-// returns for OpenCASCADE surfaces are not reliable, so getValue is not used). Available while the model's CAD is loaded in
-// this process (the in-process front ends: GUI panel, Python; `cvtmesh optimize` reads a .msh,
-// whose model has no CAD, and uses the discrete geometry). Every Gmsh call stays in core/io/.
+// returns for OpenCASCADE surfaces are not reliable, so getValue is not used). Available while the
+// model's CAD is loaded in this process (the in-process front ends: GUI panel, Python; `cvtmesh
+// optimize` reads a .msh, whose model has no CAD, and uses the discrete geometry). Every Gmsh call
+// stays in core/io/.
 #pragma once
 #include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"

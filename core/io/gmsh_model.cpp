@@ -184,13 +184,12 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         } else if (d == dim) {
           const int want = dim == 3 ? 4 : 2;
           if (type != want)
-            throw InputError(what + ": unsupported element type '" + type_name(type) + "' in " +
-                             (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
-                             " (cvtmesh optimizes linear " +
-                             (dim == 3 ? "tetrahedra" : "triangles") + " only" +
-                             (type == 3 ? "; mesh the surface without Recombine for triangles"
-                                        : "") +
-                             order_hint(type) + ")");
+            throw InputError(
+                what + ": unsupported element type '" + type_name(type) + "' in " +
+                (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
+                " (cvtmesh optimizes linear " + (dim == 3 ? "tetrahedra" : "triangles") + " only" +
+                (type == 3 ? "; mesh the surface without Recombine for triangles" : "") +
+                order_hint(type) + ")");
           const int npe = dim + 1;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) cells.push_back(vid(nd[npe * e + j]));
@@ -284,9 +283,11 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       }
       if (!zr.planar)
         throw InputError(what + ": the triangle mesh is not planar" +
-                         (off_plane.empty() ? "" : " (surfaces " + off_plane + " are not in the plane z = const of the first surface)") +
-                         " (z varies from " +
-                         std::to_string(zmin) + " to " + std::to_string(zmax) +
+                         (off_plane.empty()
+                              ? ""
+                              : " (surfaces " + off_plane +
+                                    " are not in the plane z = const of the first surface)") +
+                         " (z varies from " + std::to_string(zmin) + " to " + std::to_string(zmax) +
                          "); 2D optimization needs a mesh in a plane z = const");
       m.z0 = n ? zmin : 0;
       m.xy.resize(2 * n);

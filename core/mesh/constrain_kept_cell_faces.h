@@ -9,7 +9,9 @@
 namespace cvtmesh {
 
 // True for the surface tag of such an interface triangle.
-inline bool is_kept_cell_interface(int surface_tag) { return surface_tag < 0; }
+inline bool is_kept_cell_interface(int surface_tag) {
+  return surface_tag < 0;
+}
 
 // Requires the adjacency. Returns the number of triangles added (0 without kept 3D cells).
 int constrain_kept_cell_faces(TetMesh& mesh);

@@ -9,8 +9,7 @@ namespace cvtmesh {
 
 std::vector<std::array<int, 2>> find_coincident_vertices(const std::vector<double>& xyz,
                                                          const std::vector<char>& used,
-                                                         double relative_tolerance,
-                                                         int max_pairs) {
+                                                         double relative_tolerance, int max_pairs) {
   std::vector<std::array<int, 2>> pairs;
   const int nv = static_cast<int>(xyz.size() / 3);
   auto is_used = [&](int v) { return used.empty() || used[v]; };
@@ -22,9 +21,9 @@ std::vector<std::array<int, 2>> find_coincident_vertices(const std::vector<doubl
         hi[d] = std::max(hi[d], xyz[3 * v + d]);
       }
   if (!(lo[0] <= hi[0])) return pairs;
-  const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-                                (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double diag =
+      std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                (hi[2] - lo[2]) * (hi[2] - lo[2]));
   const double tol = relative_tolerance * diag;
   // Grid of cells of side > tol (at least 2*tol): a close pair lies in the same or adjacent cells.
   const double cell = std::max(2 * tol, diag * 1e-6) + 1e-300;

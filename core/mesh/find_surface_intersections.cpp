@@ -66,8 +66,8 @@ bool segment_meets_triangle(const double* p, const double* q, const double* a, c
   if (sp * sq > 0) return false;
   if (sp == 0 && sq == 0) {  // coplanar
     const int axis = dominant_axis(a, b, c);
-    const P2 P = project(p, axis), Q = project(q, axis), A = project(a, axis),
-             B = project(b, axis), C = project(c, axis);
+    const P2 P = project(p, axis), Q = project(q, axis), A = project(a, axis), B = project(b, axis),
+             C = project(c, axis);
     return point_in_triangle_2d(P, A, B, C) || point_in_triangle_2d(Q, A, B, C) ||
            segments_meet_2d(P, Q, A, B) || segments_meet_2d(P, Q, B, C) ||
            segments_meet_2d(P, Q, C, A);
@@ -98,8 +98,8 @@ bool improper(const std::vector<double>& xyz, const int* f, const int* g) {
       if (fs[i]) e[k++] = f[i];
     if (orient3d(P(e[0]), P(e[1]), P(f[fo]), P(g[go])) != 0) return false;
     const int axis = dominant_axis(P(f[0]), P(f[1]), P(f[2]));
-    const P2 A = project(P(e[0]), axis), B = project(P(e[1]), axis),
-             X = project(P(f[fo]), axis), Y = project(P(g[go]), axis);
+    const P2 A = project(P(e[0]), axis), B = project(P(e[1]), axis), X = project(P(f[fo]), axis),
+             Y = project(P(g[go]), axis);
     return o2(A, B, X) * o2(A, B, Y) > 0;
   }
   if (shared == 1) {
@@ -113,10 +113,8 @@ bool improper(const std::vector<double>& xyz, const int* f, const int* g) {
            segment_meets_triangle(P(ga[0]), P(ga[1]), P(f[0]), P(f[1]), P(f[2]));
   }
   for (int i = 0; i < 3; ++i) {
-    if (segment_meets_triangle(P(f[i]), P(f[(i + 1) % 3]), P(g[0]), P(g[1]), P(g[2])))
-      return true;
-    if (segment_meets_triangle(P(g[i]), P(g[(i + 1) % 3]), P(f[0]), P(f[1]), P(f[2])))
-      return true;
+    if (segment_meets_triangle(P(f[i]), P(f[(i + 1) % 3]), P(g[0]), P(g[1]), P(g[2]))) return true;
+    if (segment_meets_triangle(P(g[i]), P(g[(i + 1) % 3]), P(f[0]), P(f[1]), P(f[2]))) return true;
   }
   return false;
 }
@@ -164,8 +162,7 @@ std::vector<std::array<int, 2>> find_surface_intersections(const std::vector<dou
     const double* b = &box[6 * static_cast<std::size_t>(f)];
     for (std::int64_t i = idx(b[0], 0); i <= idx(b[3], 0); ++i)
       for (std::int64_t j = idx(b[1], 1); j <= idx(b[4], 1); ++j)
-        for (std::int64_t k = idx(b[2], 2); k <= idx(b[5], 2); ++k)
-          grid[key(i, j, k)].push_back(f);
+        for (std::int64_t k = idx(b[2], 2); k <= idx(b[5], 2); ++k) grid[key(i, j, k)].push_back(f);
   }
   std::vector<int> seen(nf, -1);
   for (int f = 0; f < nf && static_cast<int>(pairs.size()) < max_pairs; ++f) {

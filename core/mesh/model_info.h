@@ -46,7 +46,7 @@ struct ModelInfo {
   std::string source;                 // path of the file it came from ("" if built in memory)
   std::vector<ModelEntity> entities;  // all entities, every dimension
   std::vector<PhysicalGroup> groups;
-  std::vector<ElementBlock> extra;  // elements of dimension < mesh dimension - 1
+  std::vector<ElementBlock> extra;     // elements of dimension < mesh dimension - 1
   std::vector<PeriodicLink> periodic;  // kept, their vertices fixed (core/mesh/pin_vertices.h)
 };
 

@@ -1,6 +1,7 @@
 // Vertices that must not move although the optimizer would treat them as free: those of the
 // elements kept verbatim in mesh.model.extra (hybrid cells, quadrangles, loose triangles; lines
-// and points only off the boundary triangles) and the nodes of periodic links (mesh.model.periodic, by node tag). pin_vertices classifies them as corners with a marked entity (dim 0, entity < 0,
+// and points only off the boundary triangles) and the nodes of periodic links (mesh.model.periodic,
+// by node tag). pin_vertices classifies them as corners with a marked entity (dim 0, entity < 0,
 // encoding the original class) for the duration of an optimization; unpin_vertices restores
 // their classification (after any vertex permutation: the mark travels with the vertex).
 #pragma once

@@ -13,7 +13,7 @@
 namespace cvtmesh {
 
 struct StructuralDefects {
-  std::vector<std::array<int, 2>> intersecting_tris;  // pairs of constrained triangle indices
+  std::vector<std::array<int, 2>> intersecting_tris;    // pairs of constrained triangle indices
   std::vector<std::array<int, 2>> coincident_vertices;  // pairs of vertex ids (used by a tet)
   bool empty() const { return intersecting_tris.empty() && coincident_vertices.empty(); }
   // One line per kind, naming the first few occurrences: coordinates, node tags, surface tags,

@@ -18,9 +18,9 @@ using Run3 = void (*)(TetMesh& mesh, const OptimizeOptions& options, OptimizeRes
 
 struct MethodInfo {
   std::string name;
-  int dim = 3;            // 2 or 3
-  Run3 run3 = nullptr;    // 3D: the runner (core/pipeline/optimize.cpp); 2D: null (optimize_2d)
-  std::string help;       // one line, the paper's words
+  int dim = 3;          // 2 or 3
+  Run3 run3 = nullptr;  // 3D: the runner (core/pipeline/optimize.cpp); 2D: null (optimize_2d)
+  std::string help;     // one line, the paper's words
 };
 
 // Every method, 3D first then 2D, each dimension in menu order (its first is its default).

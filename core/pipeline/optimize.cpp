@@ -228,11 +228,10 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
   bm.passes = 1;
   bm.volume_budget = &budget;
   OptimizeResult polish;
-  run_polish3_with(mesh, o, polish,
-                   [&](TetMesh& m) {
-                     const long moved = smooth_boundary_maxmin(m, b, bm).nb_moved;
-                     return moved + flip_boundary_edges(m, b, bf).nb_flipped;
-                   });
+  run_polish3_with(mesh, o, polish, [&](TetMesh& m) {
+    const long moved = smooth_boundary_maxmin(m, b, bm).nb_moved;
+    return moved + flip_boundary_edges(m, b, bf).nb_flipped;
+  });
   bm.passes = 2;
   smooth_boundary_maxmin(mesh, b, bm);
   flip_boundary_edges(mesh, b, bf);

@@ -124,13 +124,13 @@ struct OptimizeResult {
   double seconds_lloyd = 0;
   // Free boundary (empty when the boundary was fixed): measured at the end of the run.
   bool boundary_free = false;
-  int nb_boundary_moved = 0;         // boundary vertices that moved
+  int nb_boundary_moved = 0;  // boundary vertices that moved
   // Roles of the boundary vertices: on a surface patch, on a curve, fixed (corners, locked).
   int nb_surface_vertices = 0, nb_curve_vertices = 0, nb_fixed_vertices = 0;
-  double hausdorff = 0;              // two-sided Hausdorff distance new vs input boundary
-  double hausdorff_tolerance = 0;    // the bound it was held to
-  double diagonal = 0;               // the input's bounding-box diagonal
-  double volume_change = 0;          // largest relative change of a region's volume
+  double hausdorff = 0;            // two-sided Hausdorff distance new vs input boundary
+  double hausdorff_tolerance = 0;  // the bound it was held to
+  double diagonal = 0;             // the input's bounding-box diagonal
+  double volume_change = 0;        // largest relative change of a region's volume
   double tri_q_min_before = 0, tri_q_min_after = 0;  // worst boundary triangle Q
   // What optimize() did besides the method: a fallback to local operations (structural
   // defects), the input kept where the method would have made it worse, elements kept

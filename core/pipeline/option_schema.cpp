@@ -43,8 +43,9 @@ std::vector<OptionSpec> make_schema() {
     s.panel = "0Method";
     s.field = &O::method;
     s.fronts = kAllFronts;
-    s.help = "the optimization method (one of the registry's for the mesh's dimension; '' = "
-             "the dimension's default)";
+    s.help =
+        "the optimization method (one of the registry's for the mesh's dimension; '' = "
+        "the dimension's default)";
     v.push_back(s);
   }
   {
@@ -55,8 +56,8 @@ std::vector<OptionSpec> make_schema() {
   }
   {
     OptionSpec s = number("tolerance", "--tolerance", &O::tolerance, 0, kInf,
-                          "Lloyd stops when the mean squared relative move D is below this",
-                          kDim23, kAllFronts);
+                          "Lloyd stops when the mean squared relative move D is below this", kDim23,
+                          kAllFronts);
     s.panel = "2Tolerance";
     v.push_back(s);
   }
@@ -68,8 +69,9 @@ std::vector<OptionSpec> make_schema() {
     s.field = &O::sizing;
     s.fronts = kAllFronts;
     s.choices = {"mesh", "uniform", "function"};
-    s.help = "sizing field H of the density 1/H^(d+2): mesh (the input's local edge length, "
-             "keeps its grading), uniform, or function (C++: size_function)";
+    s.help =
+        "sizing field H of the density 1/H^(d+2): mesh (the input's local edge length, "
+        "keeps its grading), uniform, or function (C++: size_function)";
     v.push_back(s);
   }
   v.push_back(number("relaxation", "--relaxation", &O::relaxation, 0.05, 1.95,
@@ -135,8 +137,8 @@ std::vector<OptionSpec> make_schema() {
                       kDim3));
   v.push_back(number("volume_tolerance", "--volume-tolerance", &O::volume_tolerance, 0, 1,
                      "free boundary: bound on each region's relative volume change", kDim3));
-  v.push_back(number("boundary_lloyd_rounds", "--boundary-lloyd-rounds",
-                     &O::boundary_lloyd_rounds, 0, 1000,
+  v.push_back(number("boundary_lloyd_rounds", "--boundary-lloyd-rounds", &O::boundary_lloyd_rounds,
+                     0, 1000,
                      "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = "
                      "none)",
                      kDim3));
@@ -177,8 +179,8 @@ std::string range_text(const OptionSpec& s) {
     for (const auto& x : s.choices) c += (c.empty() ? "" : ", ") + x;
     return "one of " + c;
   }
-  std::string r = (is_integral(s) ? "an integer in [" : "a number in [") + fmt(s.min) + ", " +
-                  fmt(s.max) + "]";
+  std::string r =
+      (is_integral(s) ? "an integer in [" : "a number in [") + fmt(s.min) + ", " + fmt(s.max) + "]";
   if (s.has_special) r += " or " + fmt(s.special) + " (default)";
   return r;
 }
@@ -352,7 +354,8 @@ void apply_preset(const std::string& name, OptimizeOptions& o) {
   }
   std::string avail;
   for (const OptionPreset& p : lloyd_step_presets()) avail += (avail.empty() ? "" : ", ") + p.name;
-  throw OptionError("lloyd_step", name, "unknown Lloyd step '" + name + "' (available: " + avail + ")");
+  throw OptionError("lloyd_step", name,
+                    "unknown Lloyd step '" + name + "' (available: " + avail + ")");
 }
 
 }  // namespace cvtmesh

@@ -35,22 +35,22 @@ enum OptionDims : int { kDim2 = 1, kDim3 = 2, kDim23 = 3 };
 // Which front ends show an option (all of them validate it through optimize()).
 enum OptionFront : int { kCli = 1, kPython = 2, kPanel = 4, kAllFronts = 7 };
 
-using OptionField = std::variant<int OptimizeOptions::*, unsigned OptimizeOptions::*,
-                                 double OptimizeOptions::*, bool OptimizeOptions::*,
-                                 std::string OptimizeOptions::*>;
+using OptionField =
+    std::variant<int OptimizeOptions::*, unsigned OptimizeOptions::*, double OptimizeOptions::*,
+                 bool OptimizeOptions::*, std::string OptimizeOptions::*>;
 
 struct OptionSpec {
-  std::string name;     // "max_iterations": Python keyword, JSON key, name in messages
-  std::string flag;     // "--max-iterations"; a bool whose flag starts "--no-" sets it false
-  std::string panel;    // GUI panel label ("" = not in the panel), sorted by its leading digit
+  std::string name;   // "max_iterations": Python keyword, JSON key, name in messages
+  std::string flag;   // "--max-iterations"; a bool whose flag starts "--no-" sets it false
+  std::string panel;  // GUI panel label ("" = not in the panel), sorted by its leading digit
   OptionField field;
-  int dims = kDim23;    // dimensions it applies to: a non-default value elsewhere is refused
+  int dims = kDim23;  // dimensions it applies to: a non-default value elsewhere is refused
   int fronts = kAllFronts;
-  double min = 0, max = 0;          // numbers: the allowed closed range (max may be +inf)
-  double special = 0;               // numbers: a value outside the range that means "default"
+  double min = 0, max = 0;  // numbers: the allowed closed range (max may be +inf)
+  double special = 0;       // numbers: a value outside the range that means "default"
   bool has_special = false;
-  std::vector<std::string> choices; // strings: the allowed values (empty: see validate)
-  std::string help;                 // one sentence, no default or range (added by describe)
+  std::vector<std::string> choices;  // strings: the allowed values (empty: see validate)
+  std::string help;                  // one sentence, no default or range (added by describe)
 };
 
 // The whole schema, in the order front ends list it.

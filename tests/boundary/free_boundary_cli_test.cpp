@@ -51,10 +51,10 @@ TEST(FreeBoundaryCli, DefaultMethodMovesTheBoundaryWithinItsBounds) {
   const std::string dir = testing::temp_dir();
   const std::string in = coarse_cube_sphere(dir);
   std::string log;
-  ASSERT_EQ(testing::run(testing::cli_path() + " optimize '" + in + "' --binary -o '" + dir +
-                             "/free.msh'",
-                         &log),
-            0)
+  ASSERT_EQ(
+      testing::run(
+          testing::cli_path() + " optimize '" + in + "' --binary -o '" + dir + "/free.msh'", &log),
+      0)
       << log;
   std::smatch mt;
   ASSERT_TRUE(std::regex_search(
@@ -79,9 +79,9 @@ TEST(FreeBoundaryCli, TwoRegionInterfaceMovesAsOneSurface) {
   std::string log;
   // The run's invariants (same interface triangles on both sides, group boundaries, volumes of
   // both regions within bounds) throw on failure: exit code 0 means they held.
-  ASSERT_EQ(testing::run(testing::cli_path() + " optimize '" + in + "' -o '" + dir + "/two.msh'",
-                         &log),
-            0)
+  ASSERT_EQ(
+      testing::run(testing::cli_path() + " optimize '" + in + "' -o '" + dir + "/two.msh'", &log),
+      0)
       << log;
   const MeshData d = read_mesh(dir + "/two.msh", {});
   const MeshData d0 = read_mesh(in, {});

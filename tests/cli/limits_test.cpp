@@ -21,10 +21,10 @@ TEST(CliLimits, TheTimeLimitStopsTheRunWithoutOutput) {
   const fs::path dir = testing::temp_dir();
   std::string log;
   // The default pipeline on cube_sphere takes well over a second (meshing included).
-  const int rc = testing::run(testing::cli_path() + " optimize " +
-                                  testing::geo_path("cube_sphere.geo") + " -o " +
-                                  (dir / "out.msh").string() + " -q --time-limit 0.2",
-                              &log);
+  const int rc =
+      testing::run(testing::cli_path() + " optimize " + testing::geo_path("cube_sphere.geo") +
+                       " -o " + (dir / "out.msh").string() + " -q --time-limit 0.2",
+                   &log);
   EXPECT_EQ(rc, 2) << log;
   EXPECT_NE(log.find("time limit of 0.2 s reached"), std::string::npos) << log;
   EXPECT_EQ(files_in(dir), 0) << log;

@@ -25,8 +25,8 @@ void spit(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
-std::vector<GeoScanFinding> scan_text(const std::string& text,
-                                      const std::vector<std::pair<std::string, std::string>>& set = {}) {
+std::vector<GeoScanFinding> scan_text(
+    const std::string& text, const std::vector<std::pair<std::string, std::string>>& set = {}) {
   const fs::path dir = testing::temp_dir();
   spit(dir / "m.geo", text);
   return scan_geo_for_processes((dir / "m.geo").string(), set);
@@ -107,9 +107,9 @@ TEST(GeoScan, GmshsTutorialsAndOurModelsHaveNoFinding) {
   }
   const fs::path tut = "/usr/share/doc/gmsh-doc/doc/gmsh/tutorial";
   if (fs::exists(tut / "t11.geo")) {
-    for (const char* t : {"t11.geo", "t12.geo", "t13.geo", "t14.geo", "t15.geo", "t16.geo",
-                          "t17.geo", "t18.geo", "t19.geo", "t20.geo", "t21.geo", "t6.geo",
-                          "t7.geo", "t9.geo"}) {
+    for (const char* t :
+         {"t11.geo", "t12.geo", "t13.geo", "t14.geo", "t15.geo", "t16.geo", "t17.geo", "t18.geo",
+          "t19.geo", "t20.geo", "t21.geo", "t6.geo", "t7.geo", "t9.geo"}) {
       EXPECT_TRUE(scan_geo_for_processes((tut / t).string()).empty()) << t;
       ++n;
     }

@@ -67,9 +67,10 @@ TEST(FrontEndOptions, TheCliRefusesABadToleranceWithTheCoreMessageAndWritesNothi
   const std::string dir = testing::temp_dir();
   const std::string out = dir + "/out.msh";
   std::string log;
-  const int rc = testing::run(testing::cli_path() + " optimize " + testing::geo_path("cube_sphere.geo") +
-                                  " -o " + out + " --tolerance -1",
-                              &log);
+  const int rc =
+      testing::run(testing::cli_path() + " optimize " + testing::geo_path("cube_sphere.geo") +
+                       " -o " + out + " --tolerance -1",
+                   &log);
   EXPECT_EQ(rc, 2) << log;
   EXPECT_NE(log.find(core_message_for_tolerance(-1)), std::string::npos) << log;
   EXPECT_FALSE(std::filesystem::exists(out));

@@ -89,9 +89,8 @@ TEST(StructuralDefects, FindsCoincidentNodesOfPartsInContact) {
 const char* kBox = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0,0,0,1,1,1};\n";
 
 TEST(RobustInputs, SelfIntersectingBoundaryIsOptimizedByLocalOperationsOnly) {
-  MeshData d = read_mesh(write_geo("overlap", std::string(kBox) +
-                                                  "Box(2) = {0.5,0.5,0.5,1,1,1};\n"
-                                                  "Mesh.MeshSizeMax = 0.3;\n"));
+  MeshData d = read_mesh(write_geo("overlap", std::string(kBox) + "Box(2) = {0.5,0.5,0.5,1,1,1};\n"
+                                                                  "Mesh.MeshSizeMax = 0.3;\n"));
   ASSERT_FALSE(find_structural_defects(d.tet).intersecting_tris.empty());
   const OptimizeResult r = optimize(d, quick());
   EXPECT_TRUE(has_note(r, "local operations only")) << (r.notes.empty() ? "" : r.notes[0]);
@@ -100,9 +99,8 @@ TEST(RobustInputs, SelfIntersectingBoundaryIsOptimizedByLocalOperationsOnly) {
 }
 
 TEST(RobustInputs, CoincidentNodesOfTouchingPartsAreOptimizedWithoutRebuild) {
-  MeshData d = read_mesh(write_geo("touch", std::string(kBox) +
-                                                "Box(2) = {1,0,0,1,1,1};\n"
-                                                "Mesh.MeshSizeMax = 0.3;\n"));
+  MeshData d = read_mesh(write_geo("touch", std::string(kBox) + "Box(2) = {1,0,0,1,1,1};\n"
+                                                                "Mesh.MeshSizeMax = 0.3;\n"));
   ASSERT_FALSE(find_structural_defects(d.tet).coincident_vertices.empty());
   const OptimizeResult r = optimize(d, quick("cvdt"));
   EXPECT_TRUE(has_note(r, "coincide"));
@@ -128,9 +126,8 @@ TEST(RobustInputs, OrphanNodesAreNotPassedToTetgenAndAreKept) {
 }
 
 TEST(RobustInputs, SurfaceBoundingNoVolumeIsReadAndWrittenBackUnchanged) {
-  MeshData d = read_mesh(write_geo("loose", std::string(kBox) +
-                                                "Rectangle(50) = {2,0,0,1,1};\n"
-                                                "Mesh.MeshSizeMax = 0.3;\n"));
+  MeshData d = read_mesh(write_geo("loose", std::string(kBox) + "Rectangle(50) = {2,0,0,1,1};\n"
+                                                                "Mesh.MeshSizeMax = 0.3;\n"));
   long loose = 0;
   for (const auto& b : d.tet.model.extra)
     if (b.dim == 2 && b.entity == 50) loose += static_cast<long>(b.tags.size());
@@ -216,7 +213,8 @@ TEST(RobustInputs, OutputCoordinatesAreThoseA16DigitWriterStores) {
   for (int v = 0; v < d.tet.nb_vertices(); ++v)
     if (d.tet.vclass[v].dim == 3) {
       ++free;
-      for (int c = 0; c < 3; ++c) unrounded += d.tet.point(v)[c] != round_to_digits(d.tet.point(v)[c], 16);
+      for (int c = 0; c < 3; ++c)
+        unrounded += d.tet.point(v)[c] != round_to_digits(d.tet.point(v)[c], 16);
     }
   EXPECT_GT(free, 10);
   EXPECT_EQ(unrounded, 0);
