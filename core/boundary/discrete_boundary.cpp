@@ -78,19 +78,6 @@ Vec3 tri_normal(const std::vector<double>& xyz, int a, int b, int c) {
 
 }  // namespace
 
-double bounding_box_diagonal(const TetMesh& m) {
-  double lo[3] = {std::numeric_limits<double>::infinity(), lo[0], lo[0]};
-  double hi[3] = {-lo[0], -lo[0], -lo[0]};
-  for (int v = 0; v < m.nb_vertices(); ++v)
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], m.point(v)[d]);
-      hi[d] = std::max(hi[d], m.point(v)[d]);
-    }
-  if (m.nb_vertices() == 0) return 0;
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 BoundaryModel make_discrete_boundary(const TetMesh& m, const BoundaryModelOptions& o) {
   if (!(o.feature_angle >= 0))
     throw std::invalid_argument("make_discrete_boundary: feature_angle must be >= 0");

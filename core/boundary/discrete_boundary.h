@@ -8,6 +8,7 @@
 // chain (and not a Gmsh point) it slides along the chain; anything else is a corner and is fixed,
 // as is every vertex of a locked surface (curve) entity.
 #pragma once
+#include "core/mesh/bounding_box.h"  // bounding_box_diagonal, used with the boundary model
 #include <vector>
 
 #include "core/geometry/boundary_geometry.h"
@@ -19,8 +20,5 @@ namespace cvtmesh {
 // its own copy of what it needs. Throws std::invalid_argument for a negative feature angle.
 BoundaryModel make_discrete_boundary(const TetMesh& input,
                                      const BoundaryModelOptions& options = {});
-
-// The bounding-box diagonal of a mesh's vertices.
-double bounding_box_diagonal(const TetMesh& mesh);
 
 }  // namespace cvtmesh

@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "core/mesh/bounding_box.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -57,18 +58,6 @@ bool is_cad(int dim, int tag) {
   std::string type;
   gmsh::model::getType(dim, tag, type);
   return type.rfind("Discrete", 0) != 0 && type != "Unknown";
-}
-
-double diagonal_of(const TetMesh& m) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (int v = 0; v < m.nb_vertices(); ++v)
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], m.point(v)[d]);
-      hi[d] = std::max(hi[d], m.point(v)[d]);
-    }
-  if (m.nb_vertices() == 0) return 0;
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
 }  // namespace
@@ -151,7 +140,7 @@ BoundaryModel make_gmsh_cad_boundary(const TetMesh& m, const BoundaryModelOption
     g->reference.insert(g->reference.end(), m.point(w[0]), m.point(w[0]) + 3);
   }
   out.geometry = g;
-  out.diagonal = diagonal_of(m);
+  out.diagonal = bounding_box_diagonal(m);
   out.input_xyz = m.xyz;
   return out;
 }
