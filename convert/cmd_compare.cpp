@@ -11,6 +11,8 @@
 #include "convert/schema_cli.h"
 #include "bench/baselines/tetgen_optimize.h"
 #include "bench/baselines/gmsh_optimizer.h"
+#include "bench/baselines/cgal_remesh.h"
+#include "bench/baselines/netgen_optimize.h"
 #include "core/quality/quality_fields.h"
 #include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
@@ -82,17 +84,19 @@ void register_compare(CLI::App& app) {
   auto in = std::make_shared<InputOpts>();
   auto opt = std::make_shared<OptimizeOptions>();
   auto co = std::make_shared<CompareOpts>();
-  CLI::App* c = app.add_subcommand("compare",
-                                   "the paper's table: Init | CombOpt | CVDT | CVDT+SWAP (| "
-                                   "CVDT+SWAP+smooth | Gmsh optimize | TetGen -q -O) on "
-                                   "the same Init");
+  CLI::App* c =
+      app.add_subcommand("compare",
+                         "the paper's table: Init | CombOpt | CVDT | CVDT+SWAP (| "
+                         "CVDT+SWAP+smooth | Gmsh optimize | TetGen -q -O | Netgen | CGAL) on "
+                         "the same Init");
   add_input(c, *in);
   add_schema_options(c, *opt);
   c->add_option("--format", co->format, "text, markdown or json")
       ->check(CLI::IsMember({"text", "markdown", "json"}));
   c->add_option("--save", co->save_dir,
                 "also write every mesh (with quality views) into this directory");
-  c->add_flag("!--no-baselines", co->baselines, "skip Gmsh's and TetGen's optimizers");
+  c->add_flag("!--no-baselines", co->baselines,
+              "skip the peers: Gmsh's, TetGen's, Netgen's and CGAL's optimizers");
   commands().push_back(
       {c, [in, opt, co] {
          if (!co->save_dir.empty()) {
@@ -140,6 +144,26 @@ void register_compare(CLI::App& app) {
            } catch (const InvariantError& e) {
              // A baseline that breaks the boundary is reported, not fatal for the comparison.
              std::cerr << "cvtmesh: TetGen -q -O baseline left out: " << e.what() << "\n";
+           }
+           // Netgen's and CGAL's optimizers may remove or add interior vertices: their columns
+           // are checked by verify_peer (valid mesh, the same boundary triangles).
+           MeshData ng = init;
+           try {
+             const NetgenResult r = netgen_optimize(ng.tet);
+             if (r.available)
+               cmp.add(ng, "Netgen optimize", "netgen_optimize", 1, r.seconds, false);
+             else
+               std::cerr << "cvtmesh: Netgen baseline left out: " << r.message << "\n";
+           } catch (const InvariantError& e) {
+             std::cerr << "cvtmesh: Netgen baseline left out: " << e.what() << "\n";
+           }
+           MeshData cg = init;
+           t = std::chrono::steady_clock::now();
+           try {
+             cgal_remesh(cg.tet);
+             cmp.add(cg, "CGAL remeshing", "cgal_remesh", 1, seconds_since(t), false);
+           } catch (const InvariantError& e) {
+             std::cerr << "cvtmesh: CGAL remeshing baseline left out: " << e.what() << "\n";
            }
          }
          std::cout << render(cmp.table, co->format);

@@ -9,7 +9,7 @@ PKGS=(
   libopenmesh-dev
   libgtest-dev libgmock-dev
   libcli11-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev
-  libcgal-dev
+  libcgal-dev python3-netgen python3-numpy
   pybind11-dev python3-dev python3
   xvfb xauth xdotool imagemagick
   clang libclang-rt-14-dev

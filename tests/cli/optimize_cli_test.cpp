@@ -65,7 +65,8 @@ TEST(OptimizeCli, CompareHasTheInitAndCvdtColumnsAndTheBaselines) {
                          &log),
             0)
       << log;
-  for (const char* col : {"Init", "CVDT", "Gmsh optimize", "TetGen -q -O"})
+  for (const char* col :
+       {"Init", "CVDT", "Gmsh optimize", "TetGen -q -O", "Netgen optimize", "CGAL remeshing"})
     EXPECT_NE(log.find(col), std::string::npos) << col;
   EXPECT_NE(log.find("| average quality |"), std::string::npos);
 }

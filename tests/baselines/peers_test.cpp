@@ -1,0 +1,49 @@
+// The peer optimizers of compare and bench (issue 17): Netgen's volume optimizer and CGAL's
+// tetrahedral remeshing, run on a Gmsh Init, must return a valid mesh with the input's boundary
+// triangles (verify_peer), and improve the Init's worst element (both are optimizers: a result
+// worse than the input at its worst tet would mean the transfer broke it).
+#include <gtest/gtest.h>
+
+#include "bench/baselines/cgal_remesh.h"
+#include "bench/baselines/netgen_optimize.h"
+#include "bench/baselines/verify_peer.h"
+#include "core/mesh/check_mesh.h"
+#include "core/quality/quality_stats.h"
+#include "core/util/error.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+TEST(Peers, NetgenKeepsTheBoundaryAndImprovesTheInit) {
+  const MeshData init = testing::cube_sphere(0.2, 0.15);
+  TetMesh m = init.tet;
+  const NetgenResult r = netgen_optimize(m);
+  // scripts/setup.sh installs python3-netgen: a missing Netgen is a set-up error here.
+  ASSERT_TRUE(r.available) << r.message;
+  EXPECT_TRUE(check_mesh(m).ok);
+  EXPECT_NO_THROW(verify_peer(init.tet, m, "Netgen"));
+  EXPECT_GT(r.seconds, 0.0);
+  EXPECT_GT(quality_stats(m, "").q_min, quality_stats(init.tet, "").q_min);
+}
+
+TEST(Peers, CgalKeepsTheBoundaryAndImprovesTheInit) {
+  const MeshData init = testing::cube_sphere(0.2, 0.15);
+  TetMesh m = init.tet;
+  cgal_remesh(m);
+  EXPECT_TRUE(check_mesh(m).ok);
+  EXPECT_NO_THROW(verify_peer(init.tet, m, "CGAL"));
+  EXPECT_GT(quality_stats(m, "").q_min, quality_stats(init.tet, "").q_min);
+}
+
+TEST(Peers, VerifyPeerRefusesAMovedBoundaryVertex) {
+  const MeshData init = testing::cube_sphere(0.2, 0.15);
+  TetMesh m = init.tet;
+  int v = 0;
+  while (m.vclass[v].dim == 3) ++v;
+  m.xyz[3 * v] += 1e-9;
+  EXPECT_THROW(verify_peer(init.tet, m, "test"), InvariantError);
+}
+
+}  // namespace
+}  // namespace cvtmesh
