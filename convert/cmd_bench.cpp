@@ -20,6 +20,7 @@
 #include "core/delaunay/delaunay3.h"
 #include "bench/baselines/tetgen_optimize.h"
 #include "bench/baselines/gmsh_optimizer.h"
+#include "bench/baselines/cgal_mesh3.h"
 #include "bench/baselines/cgal_remesh.h"
 #include "bench/baselines/netgen_optimize.h"
 #include "core/pipeline/optimize.h"
@@ -236,6 +237,15 @@ void register_bench(CLI::App& app) {
              cgal_remesh(d.tet);
              r.seconds = since(t0);
              r.iterations = CgalRemeshOptions{}.iterations;
+             fill_quality(r, d.tet);
+           }));
+           rows.push_back(run_isolated(in.name, "CGAL Mesh_3 from the Init's surface", [&](Row& r) {
+             MeshData d = read_mesh(in.path, init_ro);
+             r.nb_tets_in = d.tet.nb_tets();
+             const auto t0 = Clock::now();
+             cgal_mesh3(d.tet);
+             r.seconds = since(t0);
+             r.iterations = 1;
              fill_quality(r, d.tet);
            }));
            // One constrained Delaunay tetrahedralization of the Init's points by TetGen: what a

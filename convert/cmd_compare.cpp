@@ -11,6 +11,7 @@
 #include "convert/schema_cli.h"
 #include "bench/baselines/tetgen_optimize.h"
 #include "bench/baselines/gmsh_optimizer.h"
+#include "bench/baselines/cgal_mesh3.h"
 #include "bench/baselines/cgal_remesh.h"
 #include "bench/baselines/netgen_optimize.h"
 #include "core/quality/quality_fields.h"
@@ -164,6 +165,16 @@ void register_compare(CLI::App& app) {
              cmp.add(cg, "CGAL remeshing", "cgal_remesh", 1, seconds_since(t), false);
            } catch (const InvariantError& e) {
              std::cerr << "cvtmesh: CGAL remeshing baseline left out: " << e.what() << "\n";
+           }
+           // CGAL's Mesh_3 makes a new mesh with a new surface from the Init's boundary: not an
+           // optimizer of this mesh, the peer a user could mesh with instead (one region only).
+           MeshData m3 = init;
+           t = std::chrono::steady_clock::now();
+           try {
+             cgal_mesh3(m3.tet);
+             cmp.add(m3, "CGAL Mesh_3 (new surface)", "cgal_mesh3", 1, seconds_since(t), false);
+           } catch (const InvariantError& e) {
+             std::cerr << "cvtmesh: CGAL Mesh_3 baseline left out: " << e.what() << "\n";
            }
          }
          std::cout << render(cmp.table, co->format);

@@ -4,10 +4,12 @@
 // worse than the input at its worst tet would mean the transfer broke it).
 #include <gtest/gtest.h>
 
+#include "bench/baselines/cgal_mesh3.h"
 #include "bench/baselines/cgal_remesh.h"
 #include "bench/baselines/netgen_optimize.h"
 #include "bench/baselines/verify_peer.h"
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "core/util/error.h"
 #include "tests/support/test_meshes.h"
@@ -34,6 +36,20 @@ TEST(Peers, CgalKeepsTheBoundaryAndImprovesTheInit) {
   EXPECT_TRUE(check_mesh(m).ok);
   EXPECT_NO_THROW(verify_peer(init.tet, m, "CGAL"));
   EXPECT_GT(quality_stats(m, "").q_min, quality_stats(init.tet, "").q_min);
+}
+
+// Mesh_3 makes a new mesh of the same domain: valid, one region, and its volume that of the input
+// to within the surface approximation (facet_distance = size / 10).
+TEST(Peers, CgalMesh3MeshesTheSameDomain) {
+  const MeshData init = testing::cube_sphere(0.2, 0.15);
+  TetMesh m = init.tet;
+  cgal_mesh3(m);
+  EXPECT_TRUE(check_mesh(m).ok);
+  ASSERT_GT(m.nb_tets(), 0);
+  const auto v0 = region_volumes(init.tet), v1 = region_volumes(m);
+  ASSERT_EQ(v0.size(), 1u);
+  ASSERT_EQ(v1.size(), 1u);
+  EXPECT_NEAR(v1[0].second, v0[0].second, 0.02 * v0[0].second);
 }
 
 TEST(Peers, VerifyPeerRefusesAMovedBoundaryVertex) {
