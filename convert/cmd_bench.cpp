@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -153,7 +154,29 @@ struct BenchOpts {
   bool femur = false;
   std::vector<std::string> methods = {"cvdt", "cvdt+swap", "cvdt+swap+smooth", "combined"};
   bool plain = false;
+  std::string cache;         // directory of the cached Inits ("" = ~/.cache/cvtmesh/bench)
+  bool gmsh_meshing = true;  // the two rows that time Gmsh's meshing
+  bool peers = true;         // the TetGen, Netgen and CGAL rows
 };
+
+// Where the Init of an input is cached: one binary .msh per model and size parameters.
+std::string cache_path(const std::string& dir, const std::string& geo,
+                       const std::vector<std::pair<std::string, double>>& numbers) {
+  std::string key = std::filesystem::path(geo).stem().string();
+  for (const auto& [name, value] : numbers) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "_%s%.6g", name.c_str(), value);
+    key += buf;
+  }
+  return dir + "/" + key + ".msh";
+}
+
+std::string default_cache_dir() {
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x)
+    return std::string(x) + "/cvtmesh/bench";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/cvtmesh/bench";
+  return std::filesystem::temp_directory_path().string() + "/cvtmesh-bench";
+}
 
 }  // namespace
 
@@ -171,6 +194,12 @@ void register_bench(CLI::App& app) {
   c->add_flag("--plain-lloyd", bo->plain,
               "also plain Lloyd (the paper's step), and how many iterations of L-BFGS (the "
               "default) and of Anderson-accelerated Lloyd reach its final energy");
+  c->add_option("--cache", bo->cache,
+                "directory where each input's Init is meshed once and kept (binary .msh; "
+                "default ~/.cache/cvtmesh/bench); every row but Gmsh's meshing reads it, untimed");
+  c->add_flag("!--no-gmsh-meshing", bo->gmsh_meshing,
+              "skip the rows that time Gmsh's meshing (with and without its optimizer)");
+  c->add_flag("!--no-peers", bo->peers, "skip the TetGen, Netgen and CGAL rows");
   add_schema_options(c, *opt, {"method"});  // the schema's options (not --method)
   commands().push_back(
       {c, [bo, opt] {
@@ -189,69 +218,94 @@ void register_bench(CLI::App& app) {
          }
          if (bo->femur) inputs.push_back({"femur", geo + "femur.geo", {}});
          std::vector<Row> rows;
+         const std::string cache_dir = bo->cache.empty() ? default_cache_dir() : bo->cache;
+         std::error_code ec;
+         std::filesystem::create_directories(cache_dir, ec);
+         if (ec)
+           throw OutputError("bench: cannot create the cache directory '" + cache_dir +
+                             "': " + ec.message());
          for (const auto& in : inputs) {
            ReadOptions init_ro;
            init_ro.gmsh_optimize = false;
            init_ro.set_numbers = in.numbers;
            ReadOptions gmsh_ro = init_ro;
            gmsh_ro.gmsh_optimize = true;
+           // The Init, meshed once (in a child: Gmsh's state stays out of this process) and cached.
+           const std::string init_path = cache_path(cache_dir, in.path, in.numbers);
+           if (!std::filesystem::exists(init_path)) {
+             std::cerr << "cvtmesh: bench: meshing " << in.name << " into " << init_path << "\n";
+             const Row made = run_isolated(in.name, "cache", [&](Row& r) {
+               MeshData d = read_mesh(in.path, init_ro);
+               WriteOptions w;
+               w.binary = true;
+               write_mesh(d, init_path, w);
+               r.nb_tets_in = d.tet.nb_tets();
+             });
+             if (!made.ok) throw InputError("bench: cannot mesh " + in.path + ": " + made.error);
+           }
+           auto read_init = [&init_path] { return read_mesh(init_path, ReadOptions{}); };
            // Gmsh: meshing alone (the Init), and meshing with its default optimizer.
-           rows.push_back(run_isolated(in.name, "Gmsh mesh (no optimizer) = Init", [&](Row& r) {
-             const auto t0 = Clock::now();
-             MeshData d = read_mesh(in.path, init_ro);
-             r.seconds = since(t0);
-             r.nb_tets_in = d.tet.nb_tets();
-             fill_quality(r, d.tet);
-           }));
-           rows.push_back(run_isolated(in.name, "Gmsh mesh + Mesh.Optimize", [&](Row& r) {
-             const auto t0 = Clock::now();
-             MeshData d = read_mesh(in.path, gmsh_ro);
-             r.seconds = since(t0);
-             r.nb_tets_in = d.tet.nb_tets();
-             fill_quality(r, d.tet);
-           }));
-           rows.push_back(run_isolated(in.name, "TetGen -q -O on Init", [&](Row& r) {
-             MeshData d = read_mesh(in.path, init_ro);
-             r.nb_tets_in = d.tet.nb_tets();
-             const auto t0 = Clock::now();
-             tetgen_optimize(d.tet);
-             r.seconds = since(t0);
-             r.iterations = 9;
-             fill_quality(r, d.tet);
-           }));
-           // The peers a user would pick instead (issue 17): Netgen's volume optimizer (its own
-           // time, the transfer to its Python module not counted) and CGAL's remeshing.
-           rows.push_back(run_isolated(in.name, "Netgen optimize on Init", [&](Row& r) {
-             MeshData d = read_mesh(in.path, init_ro);
-             r.nb_tets_in = d.tet.nb_tets();
-             const NetgenResult res = netgen_optimize(d.tet);
-             if (!res.available) throw std::runtime_error(res.message);
-             r.seconds = res.seconds;
-             r.iterations = 1;
-             fill_quality(r, d.tet);
-           }));
-           rows.push_back(run_isolated(in.name, "CGAL remeshing on Init", [&](Row& r) {
-             MeshData d = read_mesh(in.path, init_ro);
-             r.nb_tets_in = d.tet.nb_tets();
-             const auto t0 = Clock::now();
-             cgal_remesh(d.tet);
-             r.seconds = since(t0);
-             r.iterations = CgalRemeshOptions{}.iterations;
-             fill_quality(r, d.tet);
-           }));
-           rows.push_back(run_isolated(in.name, "CGAL Mesh_3 from the Init's surface", [&](Row& r) {
-             MeshData d = read_mesh(in.path, init_ro);
-             r.nb_tets_in = d.tet.nb_tets();
-             const auto t0 = Clock::now();
-             cgal_mesh3(d.tet);
-             r.seconds = since(t0);
-             r.iterations = 1;
-             fill_quality(r, d.tet);
-           }));
+           if (bo->gmsh_meshing) {
+             rows.push_back(run_isolated(in.name, "Gmsh mesh (no optimizer) = Init", [&](Row& r) {
+               const auto t0 = Clock::now();
+               MeshData d = read_mesh(in.path, init_ro);
+               r.seconds = since(t0);
+               r.nb_tets_in = d.tet.nb_tets();
+               fill_quality(r, d.tet);
+             }));
+             rows.push_back(run_isolated(in.name, "Gmsh mesh + Mesh.Optimize", [&](Row& r) {
+               const auto t0 = Clock::now();
+               MeshData d = read_mesh(in.path, gmsh_ro);
+               r.seconds = since(t0);
+               r.nb_tets_in = d.tet.nb_tets();
+               fill_quality(r, d.tet);
+             }));
+           }
+           if (bo->peers) {
+             rows.push_back(run_isolated(in.name, "TetGen -q -O on Init", [&](Row& r) {
+               MeshData d = read_init();
+               r.nb_tets_in = d.tet.nb_tets();
+               const auto t0 = Clock::now();
+               tetgen_optimize(d.tet);
+               r.seconds = since(t0);
+               r.iterations = 9;
+               fill_quality(r, d.tet);
+             }));
+             // The peers a user would pick instead (issue 17): Netgen's volume optimizer (its own
+             // time, the transfer to its Python module not counted) and CGAL's remeshing.
+             rows.push_back(run_isolated(in.name, "Netgen optimize on Init", [&](Row& r) {
+               MeshData d = read_init();
+               r.nb_tets_in = d.tet.nb_tets();
+               const NetgenResult res = netgen_optimize(d.tet);
+               if (!res.available) throw std::runtime_error(res.message);
+               r.seconds = res.seconds;
+               r.iterations = 1;
+               fill_quality(r, d.tet);
+             }));
+             rows.push_back(run_isolated(in.name, "CGAL remeshing on Init", [&](Row& r) {
+               MeshData d = read_init();
+               r.nb_tets_in = d.tet.nb_tets();
+               const auto t0 = Clock::now();
+               cgal_remesh(d.tet);
+               r.seconds = since(t0);
+               r.iterations = CgalRemeshOptions{}.iterations;
+               fill_quality(r, d.tet);
+             }));
+             rows.push_back(
+                 run_isolated(in.name, "CGAL Mesh_3 from the Init's surface", [&](Row& r) {
+                   MeshData d = read_init();
+                   r.nb_tets_in = d.tet.nb_tets();
+                   const auto t0 = Clock::now();
+                   cgal_mesh3(d.tet);
+                   r.seconds = since(t0);
+                   r.iterations = 1;
+                   fill_quality(r, d.tet);
+                 }));
+           }
            // One constrained Delaunay tetrahedralization of the Init's points by TetGen: what a
            // Lloyd iteration that rebuilt the mesh would pay for its re-insertion alone.
            rows.push_back(run_isolated(in.name, "TetGen CDT of the Init's points", [&](Row& r) {
-             MeshData d = read_mesh(in.path, init_ro);
+             MeshData d = read_init();
              r.nb_tets_in = d.tet.nb_tets();
              const auto t0 = Clock::now();
              Delaunay3::create("tetgen")->retetrahedralize(d.tet);
@@ -262,7 +316,7 @@ void register_bench(CLI::App& app) {
            auto run_method = [&](const std::string& label, const std::string& m, double omega,
                                  int anderson, int max_it = -1, double tol = -1, int lbfgs = -1) {
              rows.push_back(run_isolated(in.name, label, [&](Row& r) {
-               MeshData d = read_mesh(in.path, init_ro);
+               MeshData d = read_init();
                r.nb_tets_in = d.tet.nb_tets();
                OptimizeOptions o = *opt;
                o.method = m;
