@@ -14,7 +14,9 @@
 #include "bench/baselines/cgal_mesh3.h"
 #include "bench/baselines/cgal_remesh.h"
 #include "bench/baselines/netgen_optimize.h"
+#include "core/io/histogram_svg.h"
 #include "core/quality/quality_fields.h"
+#include "core/quality/quality_histogram.h"
 #include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/util/error.h"
@@ -40,6 +42,7 @@ struct Comparison {
   const CompareOpts& co;
   const MeshData& init;
   QualityTable table;
+  std::vector<QualityHistogram> histograms;  // one per column, written by --save
 
   void save(const MeshData& d, const std::string& name) const {
     if (co.save_dir.empty()) return;
@@ -57,6 +60,7 @@ struct Comparison {
     s.extra.push_back({"iterations", static_cast<double>(iterations)});
     s.extra.push_back({"seconds", seconds});
     table.columns.push_back(s);
+    histograms.push_back(quality_histogram(element_qualities(d.tet, Measure::kQ), 20, label));
     save(d, file);
     std::cerr << "cvtmesh: " << label << " done (" << seconds << " s)\n";
   }
@@ -95,7 +99,8 @@ void register_compare(CLI::App& app) {
   c->add_option("--format", co->format, "text, markdown or json")
       ->check(CLI::IsMember({"text", "markdown", "json"}));
   c->add_option("--save", co->save_dir,
-                "also write every mesh (with quality views) into this directory");
+                "also write every mesh (with quality views) and the columns' quality histograms "
+                "(histogram.svg) into this directory");
   c->add_flag("!--no-baselines", co->baselines,
               "skip the peers: Gmsh's, TetGen's, Netgen's and CGAL's optimizers");
   commands().push_back(
@@ -115,6 +120,8 @@ void register_compare(CLI::App& app) {
          QualityStats s0 = quality_stats(init.tet, "Init");
          s0.extra.push_back({"seconds", mesh_seconds});
          cmp.table.columns.push_back(s0);
+         cmp.histograms.push_back(
+             quality_histogram(element_qualities(init.tet, Measure::kQ), 20, "Init"));
          cmp.save(init, "init");
          // The paper's methods compose: CVDT+SWAP = SWAP applied to the CVDT.
          MeshData comb, cvdt, cvdt_swap, polished;
@@ -176,6 +183,11 @@ void register_compare(CLI::App& app) {
            } catch (const InvariantError& e) {
              std::cerr << "cvtmesh: CGAL Mesh_3 baseline left out: " << e.what() << "\n";
            }
+         }
+         if (!co->save_dir.empty()) {
+           OutputPolicy p;
+           p.force = true;
+           write_histogram_svg(cmp.histograms, co->save_dir + "/histogram.svg", p);
          }
          std::cout << render(cmp.table, co->format);
          return 0;
