@@ -48,6 +48,12 @@ struct BoundaryModel {
   std::shared_ptr<const BoundaryGeometry> geometry;
   std::vector<VertexRole> role;  // #V of the mesh it was built for; vertices beyond: interior
   double diagonal = 0;           // bounding-box diagonal of the input mesh
+  // How far the input boundary itself is from the reference geometry: 0 for the discrete one
+  // (the input triangulation is the reference); for a CAD model the input mesh's chord error
+  // (its triangles' centroids and edge midpoints to their surface). The Hausdorff bound of a run
+  // is on top of it: no new boundary point farther from the CAD than the input was, plus the
+  // tolerance.
+  double reference_deviation = 0;
   // #V by 3: the input positions (the reference boundary's own vertices for the boundary ones);
   // a vertex's new fan must pass within the Hausdorff tolerance of its input position (the
   // reference -> new side of the Hausdorff distance, checked locally at every move).
