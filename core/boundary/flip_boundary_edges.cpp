@@ -72,9 +72,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       const int a = e[0], b = e[1];
       if (dirty[a] || dirty[b]) continue;
       if (!model.movable(a) && !model.movable(b)) continue;
-      if (model.role_of(a).role != BoundaryRole::kSurface &&
-          model.role_of(b).role != BoundaryRole::kSurface)
-        continue;  // (a, b) may lie on a curve
+      if (model.may_be_curve_edge(a, b)) continue;
       ++stats.nb_tried;
       FlipPlan p;
       for (const int* f = fans.begin_of(a); f != fans.end_of(a); ++f) {

@@ -91,9 +91,7 @@ CapCheck plan_cap_removal(const TetMesh& m, const BoundaryModel& model, const Ve
     nbr[i] = link / 4;
     if (m.tet_region[nbr[i]] != m.tet_region[t]) return CapCheck::kNotACap;
   }
-  if (model.role_of(a).role != BoundaryRole::kSurface &&
-      model.role_of(b).role != BoundaryRole::kSurface)
-    return CapCheck::kCurve;
+  if (model.may_be_curve_edge(a, b)) return CapCheck::kCurve;
   // Flat enough: the normals of (a, b, c) and (b, a, d) (consistent along (a, b)).
   const Vec3 n1 = cross(sub(m.point(b), m.point(a)), sub(m.point(c), m.point(a)));
   const Vec3 n2 = cross(sub(m.point(a), m.point(b)), sub(m.point(d), m.point(b)));

@@ -6,7 +6,7 @@
 // their surface tag (and element tags) kept; the domain loses the cap's volume.
 //
 // Check (plan_cap_removal), then apply (apply_cap_removal); the driver accepts:
-//  - refused when (a, b) may be a curve (neither end is a surface vertex), when the two triangles
+//  - refused when (a, b) may be a curve (BoundaryModel::may_be_curve_edge), when the two triangles
 //    are not of one surface or turn by more than flat_angle, when (c, d) is already an edge of a
 //    boundary triangle (the surface would stop being a manifold), when a neighbour is missing, of
 //    another region or across a constrained face, when a new triangle's samples leave the

@@ -67,7 +67,7 @@ def main():
         gmsh.finalize()
         change = abs(v1 - v0) / abs(v0) * 100
         assert change <= 0.5, f"volume {v0} -> {v1}: {change} %"
-        print(f"femur: Hausdorff {h_diag:.3e} of the diagonal (bound {bound:.3e}), volume change "
+        print(f"femur: Hausdorff {h:.3e} ({h_diag:.3e} of the diagonal, bound {bound:.3e}), volume change "
               f"{vol:.4f} % (reported), {change:.4f} % (summed here)")
     return 0
 
