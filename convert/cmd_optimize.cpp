@@ -2,9 +2,12 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "convert/cli_common.h"
 #include "convert/schema_cli.h"
+#include "core/io/gmsh_cad_boundary.h"
+#include "core/io/gmsh_session.h"
 #include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
 
@@ -36,6 +39,14 @@ void register_optimize(CLI::App& app) {
   commands().push_back(
       {c, [in, out, opt, quiet, strict] {
          validate(*opt, 0);  // a bad value fails before the (possibly long) read
+         // A model Gmsh meshes here (.geo, .step, .brep, ...) keeps its CAD while this session
+         // lives: a free boundary then moves on the CAD entities themselves (a .msh or a surface
+         // file has none: the discrete geometry of the input).
+         std::optional<GmshSession> cad;
+         if (!opt->fix_boundary && read_mesh_meshes_a_model(in->path)) {
+           cad.emplace();
+           opt->boundary_model = make_gmsh_cad_boundary_if_cad;
+         }
          MeshData d = read_mesh(in->path, in->to_read_options());
          // A bad output location fails now, not after the optimization.
          check_can_write(out->path, out->to_write_options(d, in->path));
@@ -57,6 +68,8 @@ void register_optimize(CLI::App& app) {
              std::fprintf(stderr, "\n");
            };
          const OptimizeResult r = optimize(d, *opt);
+         cad.reset();  // the writer starts from a clean Gmsh
+         opt->boundary_model = nullptr;
          write_mesh(d, out->path, out->to_write_options(d, in->path));
          QualityTable t;
          QualityStats before = r.before, after = r.after;
@@ -68,14 +81,14 @@ void register_optimize(CLI::App& app) {
          if (!*quiet) std::cerr << t.to_text();
          if (!*quiet && r.boundary_free)
            std::fprintf(stderr,
-                        "free boundary: %d surface, %d curve, %d fixed vertices; "
+                        "free boundary: %s geometry, %d surface, %d curve, %d fixed vertices; "
                         "%d vertices moved, Hausdorff %.3e (%.2e of the diagonal, "
                         "bound %.3e), volume change %.4f %%, worst boundary triangle Q %.4f -> "
                         "%.4f\n",
-                        r.nb_surface_vertices, r.nb_curve_vertices, r.nb_fixed_vertices,
-                        r.nb_boundary_moved, r.hausdorff, r.hausdorff / r.diagonal,
-                        r.hausdorff_tolerance, 100 * r.volume_change, r.tri_q_min_before,
-                        r.tri_q_min_after);
+                        r.boundary_geometry.c_str(), r.nb_surface_vertices, r.nb_curve_vertices,
+                        r.nb_fixed_vertices, r.nb_boundary_moved, r.hausdorff,
+                        r.hausdorff / r.diagonal, r.hausdorff_tolerance, 100 * r.volume_change,
+                        r.tri_q_min_before, r.tri_q_min_after);
          for (const auto& note : r.notes) std::cerr << "cvtmesh: note: " << note << "\n";
          const bool capped = !r.converged && !r.kept_input;
          if (capped)

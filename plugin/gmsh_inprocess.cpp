@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/quality/quality_fields.h"
+#include "core/io/gmsh_cad_boundary.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/pipeline/option_schema.h"
@@ -127,6 +128,8 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
   MeshData data = gmsh_read_current(options);
   GmshOptimizeOptions o = options;
   o.optimize = resolve(o.optimize, data.dim);
+  // The model's CAD, where it has one, is the free boundary's reference geometry.
+  if (!o.optimize.boundary_model) o.optimize.boundary_model = make_gmsh_cad_boundary_if_cad;
   const OptimizeResult r = optimize(data, o.optimize);
   return gmsh_write_back(data, r, o);
 }
@@ -152,6 +155,17 @@ std::string GmshOptimizeResult::to_json() const {
   j["converged"] = result.converged;
   j["seconds"] = result.seconds;
   j["views"] = views;
+  if (result.boundary_free)
+    j["free_boundary"] = {{"geometry", result.boundary_geometry},
+                          {"surface_vertices", result.nb_surface_vertices},
+                          {"curve_vertices", result.nb_curve_vertices},
+                          {"fixed_vertices", result.nb_fixed_vertices},
+                          {"moved", result.nb_boundary_moved},
+                          {"hausdorff", result.hausdorff},
+                          {"hausdorff_bound", result.hausdorff_tolerance},
+                          {"volume_change", result.volume_change},
+                          {"worst_triangle_q_before", result.tri_q_min_before},
+                          {"worst_triangle_q_after", result.tri_q_min_after}};
   j["before"] = cols.at(0);
   j["after"] = cols.at(1);
   return j.dump(2) + "\n";

@@ -2,7 +2,10 @@
 // entry point of in-process scripting (C++ and the Python module `cvtmesh`) and of the GUI panel.
 // Reads the mesh through the SDK, optimizes every volume (3D) or every planar surface (2D), writes
 // nodes and elements back into the same model (entities, physical groups and lower-dimensional
-// elements intact) and optionally adds per-element quality views.
+// elements intact) and optionally adds per-element quality views. A free boundary (the default
+// method) moves on the model's CAD surfaces and curves where it has them
+// (make_gmsh_cad_boundary_if_cad, unless options.optimize.boundary_model is set), on the mesh's
+// own boundary triangulation otherwise (a discrete model, a merged .msh).
 //
 // The caller owns Gmsh: it called gmsh::initialize() (Python: gmsh.initialize()) and loaded a
 // model. These functions declare it to the rest of cvtmesh (set_gmsh_initialized_by_caller(true),
@@ -36,7 +39,8 @@ struct GmshOptimizeResult {
   // iterations, converged and seconds).
   QualityTable table() const;
   // {"method", "dim", "iterations", "converged", "seconds", "views", "before": {...},
-  //  "after": {...}} with before/after the columns of table().to_json().
+  //  "after": {...}} with before/after the columns of table().to_json(), and with a free
+  //  boundary "free_boundary": {"geometry" ("cad" or "discrete"), "moved", "hausdorff", ...}.
   std::string to_json() const;
 };
 

@@ -8,6 +8,7 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -17,7 +18,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/geometry/boundary_geometry.h"
 #include "core/io/atomic_file.h"
+#include "core/io/gmsh_cad_boundary.h"
 #include "core/util/error.h"
 #include "plugin/gmsh_gui.h"
 #include "plugin/gmsh_inprocess.h"
@@ -114,6 +117,41 @@ struct Job {
 
 struct Cancelled {};
 
+// The CAD geometry of the model in the GUI, queried from the worker thread: every Gmsh call under
+// the GUI lock (the event loop holds it except while it waits).
+class LockedGeometry final : public BoundaryGeometry {
+ public:
+  explicit LockedGeometry(std::shared_ptr<const BoundaryGeometry> g) : g_(std::move(g)) {}
+  bool closest_on_surface(int s, const double* p, double* q) const override {
+    GuiLock lock;
+    return g_->closest_on_surface(s, p, q);
+  }
+  bool closest_on_curve(int c, const double* p, double* q) const override {
+    GuiLock lock;
+    return g_->closest_on_curve(c, p, q);
+  }
+  double distance_to_boundary(const double* p) const override {
+    GuiLock lock;
+    return g_->distance_to_boundary(p);
+  }
+  std::vector<double> samples() const override { return g_->samples(); }
+  const char* kind() const override { return g_->kind(); }
+  bool thread_safe() const override { return false; }
+
+ private:
+  std::shared_ptr<const BoundaryGeometry> g_;
+};
+
+BoundaryModel locked_cad_boundary(const TetMesh& mesh, const BoundaryModelOptions& options) {
+  BoundaryModel b;
+  {
+    GuiLock lock;
+    b = make_gmsh_cad_boundary_if_cad(mesh, options);
+  }
+  if (b.geometry) b.geometry = std::make_shared<LockedGeometry>(b.geometry);
+  return b;
+}
+
 class App {
  public:
   explicit App(const Args& args) : args_(args) {}
@@ -178,6 +216,7 @@ class App {
     job_.cancel = false;
     job_.error.clear();
     job_.running = true;
+    job_.options.optimize.boundary_model = locked_cad_boundary;  // the model's CAD, if any
     const int max_it = job_.options.optimize.max_iterations;
     job_.options.optimize.progress = [this, max_it](const OptimizeProgress& p) {
       if (job_.cancel) throw Cancelled{};

@@ -101,6 +101,7 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
     if (std::isfinite(s.min)) p.min = s.min;
     if (std::isfinite(s.max)) p.max = s.max;
     if (!std::holds_alternative<double OptimizeOptions::*>(s.field)) p.step = 1;
+    if (std::holds_alternative<bool OptimizeOptions::*>(s.field)) p.choices = {0, 1};  // a box
     if (auto cur = tree.number(p.name)) p.number = *cur;
     if (s.name == "max_iterations" && preset.max_iterations >= 0) p.number = preset.max_iterations;
     if (s.name == "tolerance" && preset.tolerance >= 0) p.number = preset.tolerance;
@@ -183,6 +184,8 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
                o.optimize);
   for (const OptionSpec& s : option_schema()) {
     if (s.panel.empty() || s.name == "method" || s.name == "sizing") continue;
+    // An input of the other dimension's panel (left in the tree) does not apply here.
+    if (dim && !(s.dims & (dim == 2 ? kDim2 : kDim3))) continue;
     if (auto v = tree.number(param_name(s))) set_number(s, o.optimize, *v);
   }
   const std::vector<std::string> sizings = panel_sizings();

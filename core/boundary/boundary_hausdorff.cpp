@@ -1,6 +1,8 @@
 #include "core/boundary/boundary_hausdorff.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/boundary/triangle_set_distance.h"
 
@@ -43,6 +45,33 @@ HausdorffDistance boundary_hausdorff(const TetMesh& m, const BoundaryGeometry& g
   h.to_reference = to_reference;
   h.from_reference = from_reference;
   return h;
+}
+
+bool surface_flip_within(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans,
+                         int f1, int f2, int a, int b, int c, int d, double tolerance) {
+  if (!std::isfinite(tolerance)) return true;
+  for (int apex : {a, b}) {
+    double pts[10][3];
+    triangle_samples(m.point(apex), m.point(c), m.point(d), pts);
+    for (int i = 3; i < 10; ++i)
+      if (model.geometry->distance_to_boundary(pts[i]) > tolerance) return false;
+  }
+  for (int x : {a, b, c, d}) {
+    if (model.input_xyz.size() < 3 * static_cast<std::size_t>(x) + 3) continue;
+    const double* p0 = &model.input_xyz[3 * static_cast<std::size_t>(x)];
+    double dist = std::numeric_limits<double>::infinity();
+    for (const int* f = fans.begin_of(x); f != fans.end_of(x); ++f) {
+      if (*f == f1 || *f == f2) continue;
+      const int* w = &m.tris[3 * static_cast<std::size_t>(*f)];
+      dist =
+          std::min(dist, point_triangle_distance(p0, m.point(w[0]), m.point(w[1]), m.point(w[2])));
+    }
+    for (int apex : {a, b})
+      if (x == apex || x == c || x == d)
+        dist = std::min(dist, point_triangle_distance(p0, m.point(apex), m.point(c), m.point(d)));
+    if (dist > tolerance) return false;
+  }
+  return true;
 }
 
 }  // namespace cvtmesh

@@ -223,6 +223,8 @@ BoundaryModel make_discrete_boundary(const TetMesh& m, const BoundaryModelOption
     csegs[chain[e]].insert(csegs[chain[e]].end(), feature[e].begin(), feature[e].end());
   for (const auto& s : csegs) g->curves.push_back(std::make_unique<SegmentSetDistance>(m.xyz, s));
   g->all = std::make_unique<TriangleSetDistance>(m.xyz, m.tris);
+  out.curve_edges = feature;  // sorted, smaller id first (from the sorted edge list)
+  out.curve_edges_known = true;
   out.geometry = g;
   out.diagonal = bounding_box_diagonal(m);
   out.input_xyz = m.xyz;

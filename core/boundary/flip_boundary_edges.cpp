@@ -44,16 +44,6 @@ struct FlipPlan {
   std::vector<double> delta;             // volume change per budget region
 };
 
-bool triangles_within(const TetMesh& m, const BoundaryModel& model, int a, int c, int d,
-                      double hausdorff) {
-  if (!std::isfinite(hausdorff)) return true;
-  double pts[10][3];
-  triangle_samples(m.point(a), m.point(c), m.point(d), pts);
-  for (int i = 3; i < 10; ++i)
-    if (model.geometry->distance_to_boundary(pts[i]) > hausdorff) return false;
-  return true;
-}
-
 }  // namespace
 
 BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
@@ -82,9 +72,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       const int a = e[0], b = e[1];
       if (dirty[a] || dirty[b]) continue;
       if (!model.movable(a) && !model.movable(b)) continue;
-      if (model.role_of(a).role != BoundaryRole::kSurface &&
-          model.role_of(b).role != BoundaryRole::kSurface)
-        continue;  // (a, b) may lie on a curve
+      if (model.may_be_curve_edge(a, b)) continue;
       ++stats.nb_tried;
       FlipPlan p;
       for (const int* f = fans.begin_of(a); f != fans.end_of(a); ++f) {
@@ -204,31 +192,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
         }
       }
       if (best_min <= old_min + o.min_gain) continue;
-      if (!triangles_within(mesh, model, a, c, d, o.hausdorff) ||
-          !triangles_within(mesh, model, b, c, d, o.hausdorff))
-        continue;
-      // The other side of the Hausdorff bound: each of the four vertices' input position stays
-      // within the tolerance of its new fan.
-      if (std::isfinite(o.hausdorff)) {
-        bool covered = true;
-        for (int x : {a, b, c, d}) {
-          if (model.input_xyz.size() < 3 * static_cast<std::size_t>(x) + 3) continue;
-          const double* p0 = &model.input_xyz[3 * static_cast<std::size_t>(x)];
-          double dist = std::numeric_limits<double>::infinity();
-          for (const int* f = fans.begin_of(x); f != fans.end_of(x); ++f) {
-            if (*f == p.f1 || *f == p.f2) continue;
-            const int* w = &mesh.tris[3 * static_cast<std::size_t>(*f)];
-            dist = std::min(dist, point_triangle_distance(p0, mesh.point(w[0]), mesh.point(w[1]),
-                                                          mesh.point(w[2])));
-          }
-          for (int apex : {a, b})
-            if (x == apex || x == c || x == d)
-              dist = std::min(dist, point_triangle_distance(p0, mesh.point(apex), mesh.point(c),
-                                                            mesh.point(d)));
-          covered &= dist <= o.hausdorff;
-        }
-        if (!covered) continue;
-      }
+      if (!surface_flip_within(mesh, model, fans, p.f1, p.f2, a, b, c, d, o.hausdorff)) continue;
       // Volume change: new minus old.
       double dv = 0;
       for (const auto& t : best_tets)

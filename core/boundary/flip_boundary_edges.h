@@ -4,7 +4,7 @@
 // replaced by the 2(k-1) tets that cone the best triangulation of the polygon (c, r1, ..., d)
 // to a and to b (the triangles (a, c, d) and (b, c, d) become the boundary, with the surface tag of
 // the old ones). Checked, then applied:
-//  - refused when (a, b) may be a curve (both ends are curve or fixed vertices), when (c, d) is
+//  - refused when (a, b) may be a curve (BoundaryModel::may_be_curve_edge), when (c, d) is
 //    already an edge of the mesh, when a new tet is not positively oriented (exact orient3d), when
 //    a new triangle leaves the Hausdorff tolerance, when the volume change (the tet abcd's) does
 //    not fit the volume budget;

@@ -4,6 +4,8 @@
 // (core/io/gmsh_cad_boundary.h). The boundary moves (core/boundary/*) see only this interface.
 // In the geometry layer (no dependency) so that both core/boundary/ and core/io/ implement it.
 #pragma once
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -48,14 +50,33 @@ struct BoundaryModel {
   std::shared_ptr<const BoundaryGeometry> geometry;
   std::vector<VertexRole> role;  // #V of the mesh it was built for; vertices beyond: interior
   double diagonal = 0;           // bounding-box diagonal of the input mesh
+  // How far the input boundary itself is from the reference geometry: 0 for the discrete one
+  // (the input triangulation is the reference); for a CAD model the input mesh's chord error
+  // (its triangles' centroids and edge midpoints to their surface). The Hausdorff bound of a run
+  // is on top of it: no new boundary point farther from the CAD than the input was, plus the
+  // tolerance.
+  double reference_deviation = 0;
   // #V by 3: the input positions (the reference boundary's own vertices for the boundary ones);
   // a vertex's new fan must pass within the Hausdorff tolerance of its input position (the
   // reference -> new side of the Hausdorff distance, checked locally at every move).
   std::vector<double> input_xyz;
   int nb_surface_vertices = 0, nb_curve_vertices = 0, nb_fixed_vertices = 0;
+  // The curves' edges as vertex pairs (smaller id first, sorted), when the builder knows them
+  // (the discrete geometry: its feature edges; no operator flips or splits them, so they stay the
+  // curves' edges). Unknown (the CAD geometry): empty, curve_edges_known false.
+  std::vector<std::array<int, 2>> curve_edges;
+  bool curve_edges_known = false;
 
   VertexRole role_of(int v) const {
     return v < static_cast<int>(role.size()) ? role[v] : VertexRole{};
+  }
+  // Whether the boundary edge (a, b) may lie on a curve: one of curve_edges if they are known;
+  // otherwise whenever neither end is a surface vertex.
+  bool may_be_curve_edge(int a, int b) const {
+    if (curve_edges_known)
+      return std::binary_search(curve_edges.begin(), curve_edges.end(),
+                                std::array<int, 2>{std::min(a, b), std::max(a, b)});
+    return role_of(a).role != BoundaryRole::kSurface && role_of(b).role != BoundaryRole::kSurface;
   }
   bool movable(int v) const {
     const BoundaryRole r = role_of(v).role;

@@ -129,20 +129,42 @@ BoundaryModel make_gmsh_cad_boundary(const TetMesh& m, const BoundaryModelOption
     }
   }
   // Reference samples: the input boundary's vertices and triangle centroids, projected on their
-  // surface.
+  // surface. The input's own distance to the CAD (its chord error): at the centroids and the
+  // edge midpoints.
+  auto dist = [](const double* a, const double* b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                     (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  double deviation = 0;
   for (int f = 0; f < m.nb_tris(); ++f) {
     const int* w = &m.tris[3 * static_cast<std::size_t>(f)];
     double c[3];
     for (int d = 0; d < 3; ++d) c[d] = (m.point(w[0])[d] + m.point(w[1])[d] + m.point(w[2])[d]) / 3;
     double q[3];
-    if (g->closest_on_surface(m.tri_surface[f], c, q))
+    if (g->closest_on_surface(m.tri_surface[f], c, q)) {
       g->reference.insert(g->reference.end(), q, q + 3);
+      deviation = std::max(deviation, dist(c, q));
+    }
     g->reference.insert(g->reference.end(), m.point(w[0]), m.point(w[0]) + 3);
+    for (int k = 0; k < 3; ++k) {
+      const int a = w[k], b = w[(k + 1) % 3];
+      if (a > b) continue;  // each interior edge once (a boundary edge of a patch: maybe twice)
+      double mid[3];
+      for (int d = 0; d < 3; ++d) mid[d] = 0.5 * (m.point(a)[d] + m.point(b)[d]);
+      if (g->closest_on_surface(m.tri_surface[f], mid, q))
+        deviation = std::max(deviation, dist(mid, q));
+    }
   }
+  out.reference_deviation = deviation;
   out.geometry = g;
   out.diagonal = bounding_box_diagonal(m);
   out.input_xyz = m.xyz;
   return out;
+}
+
+BoundaryModel make_gmsh_cad_boundary_if_cad(const TetMesh& m, const BoundaryModelOptions& o) {
+  if (!gmsh_model_has_cad(m)) return {};
+  return make_gmsh_cad_boundary(m, o);
 }
 
 }  // namespace cvtmesh

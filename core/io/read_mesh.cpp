@@ -96,6 +96,12 @@ bool is_surface_format(const std::string& ext) {
   return ext == ".stl" || ext == ".off" || ext == ".obj" || ext == ".ply";
 }
 
+// Mesh files Gmsh reads (the others it opens are models: .geo, .step, .brep, ...).
+bool is_gmsh_mesh_format(const std::string& ext) {
+  return ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" || ext == ".inp" ||
+         ext == ".bdf" || ext == ".med";
+}
+
 // A surface file: tetrahedralized by Gmsh (3D), or a planar triangle mesh read as 2D (--dim 2).
 MeshData read_surface_file(const std::string& path, const ReadOptions& options) {
   const std::string what = "'" + path + "'";
@@ -119,6 +125,11 @@ MeshData read_surface_file(const std::string& path, const ReadOptions& options) 
 }
 
 }  // namespace
+
+bool read_mesh_meshes_a_model(const std::string& path) {
+  const std::string ext = file_extension(path);
+  return !find_reader(ext) && !is_surface_format(ext) && !is_gmsh_mesh_format(ext);
+}
 
 MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   check_readable(path);
@@ -223,9 +234,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
         }
         return false;
       };
-      const bool is_mesh_file = ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" ||
-                                ext == ".inp" || ext == ".bdf" || ext == ".med";
-      if (!is_mesh_file) {
+      if (!is_gmsh_mesh_format(ext)) {
         const int want = options.dim > 0 ? options.dim : model_dim;
         if (!has_elements(want)) gmsh::model::mesh::generate(want);
       } else {

@@ -32,6 +32,12 @@ struct ReadOptions {
 // Throws InputError with a message naming the file and the problem.
 MeshData read_mesh(const std::string& path, const ReadOptions& options = {});
 
+// True if read_mesh has Gmsh open the file as a model and mesh it (.geo, .step, .brep, ...: not
+// a mesh file, not a surface file). Read inside an enclosing GmshSession, such a model stays the
+// current Gmsh model after read_mesh returns, with its CAD (gmsh_cad_boundary.h) until that
+// session ends.
+bool read_mesh_meshes_a_model(const std::string& path);
+
 // Lower-case extension with the dot (".msh"), or "" if none.
 std::string file_extension(const std::string& path);
 

@@ -90,9 +90,9 @@ struct OptimizeOptions {
   double volume_tolerance = 5e-3;
   // Constrained-CVT rounds of the boundary after Lloyd (core/boundary/boundary_lloyd.h).
   int boundary_lloyd_rounds = 10;
-  // The reference geometry of a free boundary: null = the input's own boundary triangulation
-  // (make_discrete_boundary); an in-process front end with the CAD loaded may pass
-  // make_gmsh_cad_boundary (core/io/gmsh_cad_boundary.h).
+  // The reference geometry of a free boundary: null, or a function returning a model without
+  // geometry = the input's own boundary triangulation (make_discrete_boundary); the front ends
+  // with the CAD loaded pass make_gmsh_cad_boundary_if_cad (core/io/gmsh_cad_boundary.h).
   std::function<BoundaryModel(const TetMesh&, const BoundaryModelOptions&)> boundary_model;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
@@ -132,6 +132,7 @@ struct OptimizeResult {
   double diagonal = 0;             // the input's bounding-box diagonal
   double volume_change = 0;        // largest relative change of a region's volume
   double tri_q_min_before = 0, tri_q_min_after = 0;  // worst boundary triangle Q
+  std::string boundary_geometry;  // the reference geometry's kind: "discrete" or "cad"
   // What optimize() did besides the method: a fallback to local operations (structural
   // defects), the input kept where the method would have made it worse, elements kept
   // unchanged, ... One sentence each, for the summary.

@@ -116,32 +116,43 @@ std::vector<OptionSpec> make_schema() {
                       "local smoothing, kept where the local minimum rises (the flag turns it "
                       "off)",
                       kDim3));
-  // The free boundary (issue 13; core/boundary/).
-  v.push_back(boolean("fix_boundary", "--fix-boundary", &O::fix_boundary,
-                      "keep every boundary vertex fixed (the default method otherwise moves "
-                      "surface and curve vertices on the input's geometry; the other methods "
-                      "always keep it fixed)",
-                      kDim3));
-  v.push_back(number("hausdorff", "--hausdorff", &O::hausdorff, 0, kInf,
-                     "free boundary: bound on the two-sided Hausdorff distance between the new "
-                     "and the input boundary, in model units (0 = 2e-3 of the bounding-box "
-                     "diagonal)",
-                     kDim3));
-  v.push_back(number("feature_angle", "--feature-angle", &O::feature_angle, 0, 180,
-                     "free boundary: edges where the surface turns by more than this many "
-                     "degrees are sharp features, kept as curves",
-                     kDim3));
-  v.push_back(boolean("free_smooth_curves", "--free-smooth-curves", &O::free_smooth_curves,
-                      "free boundary: Gmsh curves and points across which the surface is smooth "
-                      "are not kept; their vertices move on the surface",
-                      kDim3));
-  v.push_back(number("volume_tolerance", "--volume-tolerance", &O::volume_tolerance, 0, 1,
-                     "free boundary: bound on each region's relative volume change", kDim3));
-  v.push_back(number("boundary_lloyd_rounds", "--boundary-lloyd-rounds", &O::boundary_lloyd_rounds,
-                     0, 1000,
-                     "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = "
-                     "none)",
-                     kDim3));
+  // The free boundary (issue 13; core/boundary/), in the panel's group "Free boundary".
+  auto panel = [&v](OptionSpec s, const char* label) {
+    s.fronts = kAllFronts;
+    s.panel = std::string("6Free boundary/") + label;
+    v.push_back(std::move(s));
+  };
+  panel(boolean("fix_boundary", "--fix-boundary", &O::fix_boundary,
+                "keep every boundary vertex fixed (the default method otherwise moves "
+                "surface and curve vertices on the input's geometry; the other methods "
+                "always keep it fixed)",
+                kDim3),
+        "0Fix boundary");
+  panel(number("hausdorff", "--hausdorff", &O::hausdorff, 0, kInf,
+               "free boundary: bound on the two-sided Hausdorff distance between the new "
+               "and the input boundary, in model units (0 = 2e-3 of the bounding-box "
+               "diagonal; on a CAD model, on top of the input mesh's own distance to the CAD)",
+               kDim3),
+        "1Hausdorff bound");
+  panel(number("feature_angle", "--feature-angle", &O::feature_angle, 0, 180,
+               "free boundary: edges where the surface turns by more than this many "
+               "degrees are sharp features, kept as curves",
+               kDim3),
+        "2Feature angle");
+  panel(boolean("free_smooth_curves", "--free-smooth-curves", &O::free_smooth_curves,
+                "free boundary: Gmsh curves and points across which the surface is smooth "
+                "are not kept; their vertices move on the surface",
+                kDim3),
+        "3Free smooth curves");
+  panel(number("volume_tolerance", "--volume-tolerance", &O::volume_tolerance, 0, 1,
+               "free boundary: bound on each region's relative volume change", kDim3),
+        "4Volume tolerance");
+  panel(
+      number("boundary_lloyd_rounds", "--boundary-lloyd-rounds", &O::boundary_lloyd_rounds, 0, 1000,
+             "free boundary: constrained-CVT rounds of the boundary after Lloyd (0 = "
+             "none)",
+             kDim3),
+      "5CVT rounds");
   // Issue 14 (robust branch): Python only for now; the CLI has --allow-worse (cmd_optimize.cpp).
   v.push_back(boolean("never_worse", "", &O::never_worse,
                       "never worse than the input: a result with a lower Q_min or min angle or a "

@@ -91,6 +91,27 @@ TEST(DiscreteBoundary, AnStlBoxHasSixFacesTwelveFeatureEdgesAndEightCorners) {
   EXPECT_EQ(b.nb_fixed_vertices, 8);
   EXPECT_EQ(curves.size(), 12u);
   EXPECT_EQ(surfaces.size(), 6u);
+  // The curves' edges are known exactly: a boundary edge is one iff both ends lie on one box edge
+  // (12 edges of 4 segments); an edge joining vertices of two different box edges (or a corner
+  // and another box edge) across a face is not, though neither end is a surface vertex.
+  ASSERT_TRUE(b.curve_edges_known);
+  std::set<std::pair<int, int>> curve_edges, across;
+  for (int f = 0; f < m.nb_tris(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int x = m.tris[3 * f + k], y = m.tris[3 * f + (k + 1) % 3];
+      const double *p = m.point(x), *q = m.point(y);
+      int shared = 0;
+      for (int d = 0; d < 3; ++d) shared += p[d] == q[d] && (p[d] == 0 || p[d] == kN);
+      const std::pair<int, int> e{std::min(x, y), std::max(x, y)};
+      EXPECT_EQ(b.may_be_curve_edge(x, y), shared == 2) << x << "-" << y;
+      if (shared == 2) curve_edges.insert(e);
+      if (shared < 2 && b.role_of(x).role != BoundaryRole::kSurface &&
+          b.role_of(y).role != BoundaryRole::kSurface)
+        across.insert(e);
+    }
+  EXPECT_EQ(curve_edges.size(), 48u);
+  EXPECT_EQ(b.curve_edges.size(), 48u);
+  EXPECT_GT(across.size(), 0u);  // what the conservative rule (no edge list) would refuse
   // A feature angle above 90 degrees makes the whole box one smooth patch: no curves, no corners.
   BoundaryModelOptions o;
   o.feature_angle = 95;

@@ -102,6 +102,37 @@ TEST(FreeBoundaryCli, TwoRegionInterfaceMovesAsOneSurface) {
   EXPECT_GT(moved, 0);
 }
 
+// A CAD model the CLI meshes itself: the free boundary moves on the CAD (the report says so), and
+// every surface and curve node of the output lies on the exact sphere to 1e-12.
+TEST(FreeBoundaryCli, GeoInputMovesOnTheCadSphereTo1e12) {
+  const std::string dir = testing::temp_dir();
+  const std::string geo = dir + "/ball.geo";
+  {
+    std::ofstream f(geo);
+    f << "SetFactory(\"OpenCASCADE\");\nSphere(1) = {0.1, 0.2, 0.3, 1};\n"
+         "Mesh.MeshSizeMax = 0.3;\nMesh.MeshSizeMin = 0.3;\n";
+  }
+  std::string log;
+  ASSERT_EQ(
+      testing::run(testing::cli_path() + " optimize '" + geo + "' -o '" + dir + "/b.msh'", &log), 0)
+      << log;
+  EXPECT_NE(log.find("free boundary: cad geometry"), std::string::npos) << log;
+  std::smatch mt;
+  ASSERT_TRUE(std::regex_search(log, mt, std::regex("; ([0-9]+) vertices moved"))) << log;
+  EXPECT_GT(std::stoi(mt[1]), 0) << log;
+  const MeshData d = read_mesh(dir + "/b.msh", {});
+  int on_boundary = 0;
+  for (int v = 0; v < d.tet.nb_vertices(); ++v) {
+    if (d.tet.vclass[v].dim == 3) continue;
+    const double* p = d.tet.point(v);
+    const double r = std::sqrt((p[0] - .1) * (p[0] - .1) + (p[1] - .2) * (p[1] - .2) +
+                               (p[2] - .3) * (p[2] - .3));
+    EXPECT_LE(std::fabs(r - 1), 1e-12) << "node " << d.tet.node_tags[v];
+    ++on_boundary;
+  }
+  EXPECT_GT(on_boundary, 50);
+}
+
 TEST(FreeBoundaryCli, FixBoundaryKeepsEveryBoundaryNodeAndMatchesTheBaseline) {
   const std::string dir = testing::temp_dir();
   const std::string in = coarse_cube_sphere(dir);

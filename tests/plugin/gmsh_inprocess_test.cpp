@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -145,6 +146,37 @@ TEST_F(GmshInProcess, EveryMethodOptimizesTheCurrentModelInPlace) {
     for (const auto& v : data) q_min = std::min(q_min, v.at(0));
     EXPECT_NEAR(q_min, r.result.after.q_min, 1e-12);
   }
+}
+
+// The default method on an OCC ball in the current model: the free boundary moves on the CAD
+// sphere (result.boundary_geometry "cad"), and every node Gmsh holds on the sphere's surface and
+// seam afterwards is on the exact sphere to 1e-12; the points (poles) never move.
+TEST_F(GmshInProcess, DefaultMethodMovesTheBoundaryOnTheCadSphereTo1e12) {
+  gmsh::model::add("ball");
+  gmsh::model::occ::addSphere(0.1, 0.2, 0.3, 1);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.3);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.3);
+  gmsh::model::mesh::generate(3);
+  const auto boundary = nodes(2);
+  const auto points = nodes(0);
+  GmshOptimizeOptions o;
+  o.optimize.max_iterations = 10;
+  const GmshOptimizeResult r = gmsh_optimize(o);
+  ASSERT_TRUE(r.result.boundary_free);
+  EXPECT_EQ(r.result.boundary_geometry, "cad");
+  EXPECT_GT(r.result.nb_boundary_moved, 0);
+  const auto after = nodes(2);
+  ASSERT_EQ(after.size(), boundary.size());
+  int moved = 0;
+  for (const auto& [tag, x] : after) {
+    const double rad = std::sqrt((x[0] - .1) * (x[0] - .1) + (x[1] - .2) * (x[1] - .2) +
+                                 (x[2] - .3) * (x[2] - .3));
+    EXPECT_LE(std::fabs(rad - 1), 1e-12) << "node " << tag;
+    moved += boundary.at(tag) != x;
+  }
+  EXPECT_GT(moved, 0);
+  EXPECT_EQ(nodes(0), points);
 }
 
 TEST_F(GmshInProcess, RunningAgainReplacesTheQualityViews) {

@@ -111,6 +111,21 @@ class Gui(unittest.TestCase):
         self.assertGreater(run["result"]["after"]["average_quality"],
                            run["result"]["before"]["average_quality"])
 
+    def test_a_cad_ball_moves_its_boundary_on_the_cad(self):
+        ball = os.path.join(self.tmp.name, "ball.geo")
+        with open(ball, "w") as f:
+            f.write('SetFactory("OpenCASCADE");\nSphere(1) = {0.1, 0.2, 0.3, 1};\n'
+                    "Mesh.MeshSizeMax = 0.3;\nMesh.MeshSizeMin = 0.3;\n")
+        self.start("--run-on-start", "--max-iterations", "8", "--exit-after-run", "0",
+                   model=ball)
+        run = self.result_of("optimize")
+        status, out = self.finish()
+        self.assertEqual(status, 0, out)
+        fb = run["result"]["free_boundary"]  # the default method, queried from the worker thread
+        self.assertEqual(fb["geometry"], "cad")
+        self.assertGreater(fb["moved"], 0)
+        self.assertLessEqual(fb["hausdorff"], fb["hausdorff_bound"])
+
     def test_stop_button_ends_a_long_run(self):
         # Tolerance 0 never converges: 1000 iterations would take minutes.
         self.start("--method", "cvdt", "--tolerance", "0", "--max-iterations", "1000",

@@ -242,6 +242,46 @@ class PlanarModel(unittest.TestCase):
         self.assertEqual(len(data), table["after"]["number_of_elements"])
 
 
+class CadBoundary(unittest.TestCase):
+    """The default method on an OpenCASCADE ball built in Python: the free boundary moves on the
+    CAD sphere itself, to 1e-12, and the boundary options are keyword arguments."""
+
+    def setUp(self):
+        gmsh.initialize()
+        gmsh.option.setNumber("General.Terminal", 0)
+
+    def tearDown(self):
+        gmsh.finalize()
+
+    def test_boundary_options_are_keywords(self):
+        names = {o["name"] for o in cvtmesh.options()}
+        for k in ("fix_boundary", "hausdorff", "feature_angle", "volume_tolerance",
+                  "boundary_lloyd_rounds", "free_smooth_curves"):
+            self.assertIn(k, names)
+
+    def test_ball_boundary_stays_on_the_sphere(self):
+        gmsh.model.add("ball")
+        gmsh.model.occ.addSphere(0.1, 0.2, 0.3, 1)
+        gmsh.model.occ.synchronize()
+        gmsh.option.setNumber("Mesh.MeshSizeMax", 0.3)
+        gmsh.option.setNumber("Mesh.MeshSizeMin", 0.3)
+        gmsh.model.mesh.generate(3)
+        before = nodes(2)
+        table = cvtmesh.optimize(max_iterations=10, hausdorff=0.02)
+        fb = table["free_boundary"]
+        self.assertEqual(fb["geometry"], "cad")
+        self.assertGreater(fb["moved"], 0)
+        # On a CAD model the bound is on top of the input mesh's own chord error.
+        self.assertGreaterEqual(fb["hausdorff_bound"], 0.02)
+        self.assertLessEqual(fb["hausdorff"], fb["hausdorff_bound"])
+        after = nodes(2)
+        self.assertEqual(set(after), set(before))
+        for tag, (x, y, z) in after.items():
+            r = ((x - 0.1) ** 2 + (y - 0.2) ** 2 + (z - 0.3) ** 2) ** 0.5
+            self.assertLessEqual(abs(r - 1), 1e-12, tag)
+        self.assertGreater(sum(1 for t in after if after[t] != before[t]), 0)
+
+
 def initial_quality(size_factor):
     """Average Q of Gmsh's own mesh of the model (what the examples start from)."""
     gmsh.option.setNumber("Mesh.MeshSizeFactor", size_factor)
