@@ -55,7 +55,7 @@ struct Comparison {
     s.extra.push_back({"seconds", seconds});
     table.columns.push_back(s);
     save(d, file);
-    std::cerr << "cvtmesh: " << label << " done (" << seconds << " s)\n";
+    info() << "cvtmesh: " << label << " done (" << seconds << " s)\n";
   }
 
   // Runs `method` on a copy of `from`; the column's cost adds that of the run it continues.
@@ -92,7 +92,8 @@ void register_compare(CLI::App& app) {
       ->check(CLI::IsMember({"text", "markdown", "json"}));
   c->add_option("--save", co->save_dir,
                 "also write every mesh (with quality views) into this directory");
-  c->add_flag("!--no-baselines", co->baselines, "skip Gmsh's and TetGen's optimizers");
+  c->add_flag_callback(
+      "--no-baselines", [co] { co->baselines = false; }, "skip Gmsh's and TetGen's optimizers");
   commands().push_back(
       {c, [in, opt, co] {
          if (!co->save_dir.empty()) {
@@ -139,7 +140,7 @@ void register_compare(CLI::App& app) {
              cmp.add(tg, "TetGen -q -O", "tetgen_q_O", 9, seconds_since(t));
            } catch (const InvariantError& e) {
              // A baseline that breaks the boundary is reported, not fatal for the comparison.
-             std::cerr << "cvtmesh: TetGen -q -O baseline left out: " << e.what() << "\n";
+             info() << "cvtmesh: TetGen -q -O baseline left out: " << e.what() << "\n";
            }
          }
          std::cout << render(cmp.table, co->format);

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "convert/cli_common.h"
+#include "convert/json_report.h"
 
 namespace cvtmesh::cli {
 
@@ -22,7 +23,11 @@ void register_stats(CLI::App& app) {
                           const std::string l = label->empty() ? in->path : *label;
                           t.columns.push_back(d.dim == 3 ? quality_stats(d.tet, l)
                                                          : quality_stats(d.tri, l));
-                          std::cout << render(t, *format);
+                          // One mesh: its object alone (docs/cli.md, JSON).
+                          if (*format == "json")
+                            std::cout << mesh_json(t.columns.front()).dump(2) << "\n";
+                          else
+                            std::cout << render(t, *format);
                           return 0;
                         }});
 }
