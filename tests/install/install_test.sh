@@ -4,8 +4,8 @@
 # program builds with `pkg-config cvtmesh`, and Debian's python3 imports the module from the
 # prefix's dist-packages.   Usage: install_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
-BUILD=$1
-SRC=$2
+BUILD=$(cd "$1" && pwd)
+SRC=$(cd "$2" && pwd)
 P=$(mktemp -d /tmp/cvtmesh-install-XXXXXX)
 trap 'rm -rf "$P"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
