@@ -1,6 +1,13 @@
 #include "convert/cli_common.h"
 
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+#include "convert/json_report.h"
+#include "core/io/atomic_file.h"
 #include "core/io/read_msh_format.h"
+#include "core/util/error.h"
 #include "core/quality/quality_fields.h"
 
 namespace cvtmesh::cli {
@@ -8,6 +15,34 @@ namespace cvtmesh::cli {
 std::vector<Command>& commands() {
   static std::vector<Command> c;
   return c;
+}
+
+GlobalOpts& global_opts() {
+  static GlobalOpts g;
+  return g;
+}
+
+void add_global_options(CLI::App& app) {
+  GlobalOpts& g = global_opts();
+  auto* q =
+      app.add_flag("-q,--quiet", g.quiet, "nothing on stderr but errors (no progress, notes)");
+  auto* v = app.add_flag("-v,--verbose", g.verbose,
+                         "more detail on stderr (optimize: the timings of every iteration)");
+  q->excludes(v);
+  app.add_option("--threads", g.threads,
+                 "threads of the parallel loops (default: OMP_NUM_THREADS, else every core)")
+      ->check(CLI::PositiveNumber);
+}
+
+void apply_global_options() {
+  // default_thread_count() reads OMP_NUM_THREADS on its first call, which comes later.
+  if (global_opts().threads > 0)
+    setenv("OMP_NUM_THREADS", std::to_string(global_opts().threads).c_str(), 1);
+}
+
+std::ostream& info() {
+  static std::ostream sink(nullptr);  // no buffer: writes are dropped
+  return global_opts().quiet ? sink : std::cerr;
 }
 
 ReadOptions InputOpts::to_read_options() const {
@@ -57,7 +92,8 @@ WriteOptions OutputOpts::to_write_options(const MeshData& d, const std::string& 
   w.msh_version = msh_version > 0 ? msh_version : f.ok && f.version < 3 ? 2.2 : 4.1;
   w.binary = binary || (f.ok && f.binary && !ascii);
   if (quality) w.fields = quality_fields(d);
-  w.policy.force = !no_clobber;
+  w.policy.force = force || !no_clobber;
+  w.save_all = save_all;
   w.policy.in_place = in_place;
   w.policy.input_path = input;
   return w;
@@ -74,12 +110,27 @@ void add_output_flags(CLI::App* c, OutputOpts& o) {
   c->add_flag("--ascii", o.ascii, "ASCII .msh output even if the input .msh is binary");
   c->add_flag("--no-clobber", o.no_clobber,
               "refuse to replace an existing output file (default: replace it, like gmsh -o)");
+  c->add_flag("--force", o.force, "replace an existing output file even with --no-clobber");
+  c->add_flag("--save-all", o.save_all,
+              ".msh: write every element (like gmsh -save_all), not only those Gmsh would save "
+              "(a model's physical groups, the blocks a .msh input held)");
   c->add_flag("--in-place", o.in_place, "allow the output to be the input file itself");
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  check_directory_writable(path);
+  AtomicFile out(path);
+  {
+    std::ofstream f(out.temp_path(), std::ios::binary);
+    f << text;
+    if (!f.flush()) throw OutputError("cannot write '" + path + "'");
+  }
+  out.commit();
 }
 
 std::string render(const QualityTable& t, const std::string& format) {
   if (format == "markdown") return t.to_markdown();
-  if (format == "json") return t.to_json();
+  if (format == "json") return table_json(t).dump(2) + "\n";
   return t.to_text();
 }
 

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,28 @@ struct Command {
   std::function<int()> run;
 };
 std::vector<Command>& commands();
+
+// The exit codes of every subcommand (README, docs/cli.md).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitUsage = 1;        // bad command line (CLI11's parse errors map to it)
+inline constexpr int kExitBadInput = 2;     // unreadable input, or a refused option value
+inline constexpr int kExitCannotWrite = 3;  // the output cannot be written
+inline constexpr int kExitInternal = 4;     // an invariant was violated (a bug): nothing written
+inline constexpr int kExitCheckFailed = 5;  // `check` found problems
+inline constexpr int kExitStrict = 6;       // `optimize --strict`: capped, fell back or kept input
+
+// The options every subcommand takes (before or after its name): -q, -v, --threads.
+struct GlobalOpts {
+  bool quiet = false;    // nothing on stderr but errors
+  bool verbose = false;  // more detail (optimize: internal timings per iteration)
+  int threads = 0;       // OpenMP threads of the parallel loops (0: OMP_NUM_THREADS or all cores)
+};
+GlobalOpts& global_opts();
+void add_global_options(CLI::App& app);
+// Applies --threads (before anything reads the thread count).
+void apply_global_options();
+// stderr, or a sink under -q: for progress, notes and "wrote ..." lines (not for errors).
+std::ostream& info();
 
 // Options of the subcommands that read a mesh.
 struct InputOpts {
@@ -39,12 +62,17 @@ struct OutputOpts {
   bool binary = false;
   bool ascii = false;
   bool no_clobber = false;
+  bool force = false;  // overrides --no-clobber
   bool in_place = false;
+  bool save_all = false;
   WriteOptions to_write_options(const MeshData& d, const std::string& input) const;
 };
 void add_output_flags(CLI::App* c, OutputOpts& o);
 
-// Renders a table as "text", "markdown" or "json".
+// Writes a text file (a JSON report) atomically; OutputError if it cannot.
+void write_text_file(const std::string& path, const std::string& text);
+
+// Renders a table as "text", "markdown" or "json" (json_report.h: {"schema", "meshes": [...]}).
 std::string render(const QualityTable& t, const std::string& format);
 
 // One register function per subcommand (convert/cmd_<name>.cpp).

@@ -350,7 +350,7 @@ void register_bench(CLI::App& app) {
                           plain_its, 0.0, 0);
              }
            }
-           std::cerr << "cvtmesh: bench " << in.name << " done\n";
+           info() << "cvtmesh: bench " << in.name << " done\n";
          }
          std::printf(
              "| input | method | tets in | tets out | seconds | s / Lloyd it | peak MB | "

@@ -31,7 +31,7 @@ void register_check(CLI::App& app) {
                                 r.ok = false;
                                 r.problems.push_back(lines[i]);
                               } else {
-                                std::cerr << in->path << ": warning: " << lines[i] << "\n";
+                                info() << in->path << ": warning: " << lines[i] << "\n";
                               }
                             }
                           }
@@ -44,7 +44,7 @@ void register_check(CLI::App& app) {
                           }
                           std::cout << in->path << ": INVALID\n";
                           for (const auto& p : r.problems) std::cout << "  " << p << "\n";
-                          return 5;
+                          return kExitCheckFailed;
                         }});
 }
 

@@ -62,7 +62,7 @@ struct Comparison {
     table.columns.push_back(s);
     histograms.push_back(quality_histogram(element_qualities(d.tet, Measure::kQ), 20, label));
     save(d, file);
-    std::cerr << "cvtmesh: " << label << " done (" << seconds << " s)\n";
+    info() << "cvtmesh: " << label << " done (" << seconds << " s)\n";
   }
 
   // Runs `method` on a copy of `from`; the column's cost adds that of the run it continues.
@@ -101,8 +101,9 @@ void register_compare(CLI::App& app) {
   c->add_option("--save", co->save_dir,
                 "also write every mesh (with quality views) and the columns' quality histograms "
                 "(histogram.svg) into this directory");
-  c->add_flag("!--no-baselines", co->baselines,
-              "skip the peers: Gmsh's, TetGen's, Netgen's and CGAL's optimizers");
+  c->add_flag_callback(
+      "--no-baselines", [co] { co->baselines = false; },
+      "skip the peers: Gmsh's, TetGen's, Netgen's and CGAL's optimizers");
   commands().push_back(
       {c, [in, opt, co] {
          if (!co->save_dir.empty()) {
@@ -151,7 +152,7 @@ void register_compare(CLI::App& app) {
              cmp.add(tg, "TetGen -q -O", "tetgen_q_O", 9, seconds_since(t));
            } catch (const InvariantError& e) {
              // A baseline that breaks the boundary is reported, not fatal for the comparison.
-             std::cerr << "cvtmesh: TetGen -q -O baseline left out: " << e.what() << "\n";
+             info() << "cvtmesh: TetGen -q -O baseline left out: " << e.what() << "\n";
            }
            // Netgen's and CGAL's optimizers may remove or add interior vertices: their columns
            // are checked by verify_peer (valid mesh, the same boundary triangles).
@@ -161,9 +162,9 @@ void register_compare(CLI::App& app) {
              if (r.available)
                cmp.add(ng, "Netgen optimize", "netgen_optimize", 1, r.seconds, false);
              else
-               std::cerr << "cvtmesh: Netgen baseline left out: " << r.message << "\n";
+               info() << "cvtmesh: Netgen baseline left out: " << r.message << "\n";
            } catch (const InvariantError& e) {
-             std::cerr << "cvtmesh: Netgen baseline left out: " << e.what() << "\n";
+             info() << "cvtmesh: Netgen baseline left out: " << e.what() << "\n";
            }
            MeshData cg = init;
            t = std::chrono::steady_clock::now();
@@ -171,7 +172,7 @@ void register_compare(CLI::App& app) {
              cgal_remesh(cg.tet);
              cmp.add(cg, "CGAL remeshing", "cgal_remesh", 1, seconds_since(t), false);
            } catch (const InvariantError& e) {
-             std::cerr << "cvtmesh: CGAL remeshing baseline left out: " << e.what() << "\n";
+             info() << "cvtmesh: CGAL remeshing baseline left out: " << e.what() << "\n";
            }
            // CGAL's Mesh_3 makes a new mesh with a new surface from the Init's boundary: not an
            // optimizer of this mesh, the peer a user could mesh with instead (one region only).
@@ -181,7 +182,7 @@ void register_compare(CLI::App& app) {
              cgal_mesh3(m3.tet);
              cmp.add(m3, "CGAL Mesh_3 (new surface)", "cgal_mesh3", 1, seconds_since(t), false);
            } catch (const InvariantError& e) {
-             std::cerr << "cvtmesh: CGAL Mesh_3 baseline left out: " << e.what() << "\n";
+             info() << "cvtmesh: CGAL Mesh_3 baseline left out: " << e.what() << "\n";
            }
          }
          if (!co->save_dir.empty()) {

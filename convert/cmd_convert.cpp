@@ -19,7 +19,7 @@ void register_convert(CLI::App& app) {
   commands().push_back({c, [in, out] {
                           const MeshData d = read_mesh(in->path, in->to_read_options());
                           write_mesh(d, out->path, out->to_write_options(d, in->path));
-                          std::cerr << "cvtmesh: wrote " << out->path << "\n";
+                          info() << "cvtmesh: wrote " << out->path << "\n";
                           return 0;
                         }});
 }

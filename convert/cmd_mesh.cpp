@@ -25,7 +25,7 @@ void register_mesh(CLI::App& app) {
   commands().push_back({c, [in, out] {
                           const MeshData d = read_mesh(in->path, init_read_options(*in));
                           write_mesh(d, out->path, out->to_write_options(d, in->path));
-                          std::cerr << "cvtmesh: wrote " << out->path << "\n";
+                          info() << "cvtmesh: wrote " << out->path << "\n";
                           return 0;
                         }});
 }

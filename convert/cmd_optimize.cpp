@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "convert/cli_common.h"
+#include "convert/json_report.h"
 #include "convert/schema_cli.h"
 #include "core/io/gmsh_cad_boundary.h"
 #include "core/io/gmsh_session.h"
@@ -17,8 +18,9 @@ void register_optimize(CLI::App& app) {
   auto in = std::make_shared<InputOpts>();
   auto out = std::make_shared<OutputOpts>();
   auto opt = std::make_shared<OptimizeOptions>();
-  auto quiet = std::make_shared<bool>(false);
   auto strict = std::make_shared<bool>(false);
+  auto report = std::make_shared<std::string>();
+  auto format = std::make_shared<std::string>("text");
   CLI::App* c = app.add_subcommand(
       "optimize", "optimize a mesh (CVT/Lloyd CVDT, sliver swaps, classical baselines)");
   add_input(c, *in);
@@ -29,15 +31,22 @@ void register_optimize(CLI::App& app) {
   c->add_option("--lock-physical", opt->lock_physical,
                 "free boundary: keep the surfaces / curves of this physical group (by name) fixed; "
                 "repeatable");
-  c->add_flag("-q,--quiet", *quiet, "no progress on stderr");
+  c->add_option("--report", *report,
+                "also write the result as JSON to this file (docs/cli.md, JSON: before, after, "
+                "method, iterations, ...)");
+  c->add_option("--format", *format,
+                "text: the quality table on stderr; json: the JSON report on stdout as well")
+      ->check(CLI::IsMember({"text", "json"}));
   c->add_flag("--strict", *strict,
               "exit with code 6 (after writing the output) when the method stopped at the "
               "iteration cap, fell back to local operations, or the input was kept");
-  c->add_flag("!--allow-worse", opt->never_worse,
-              "keep the method's result even if its Q_min or dihedral angles are worse than the "
-              "input's (default: fall back to the polish alone, or keep the input)");
+  c->add_flag_callback(
+      "--allow-worse", [opt] { opt->never_worse = false; },
+      "keep the method's result even if its Q_min or dihedral angles are worse than the "
+      "input's (default: fall back to the polish alone, or keep the input)");
   commands().push_back(
-      {c, [in, out, opt, quiet, strict] {
+      {c, [in, out, opt, strict, report, format] {
+         const bool quiet = global_opts().quiet, verbose = global_opts().verbose;
          validate(*opt, 0);  // a bad value fails before the (possibly long) read
          // A model Gmsh meshes here (.geo, .step, .brep, ...) keeps its CAD while this session
          // lives: a free boundary then moves on the CAD entities themselves (a .msh or a surface
@@ -50,12 +59,13 @@ void register_optimize(CLI::App& app) {
          MeshData d = read_mesh(in->path, in->to_read_options());
          // A bad output location fails now, not after the optimization.
          check_can_write(out->path, out->to_write_options(d, in->path));
-         if (!*quiet)
-           opt->progress = [](const OptimizeProgress& p) {
+         if (!report->empty()) check_directory_writable(*report);
+         if (!quiet)
+           opt->progress = [verbose](const OptimizeProgress& p) {
              std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f",
                           p.phase.c_str(), p.iteration, p.restarted ? "*" : " ", p.D, p.energy,
                           p.q_min, p.q_avg);
-             if (p.nb_dual_cells + p.nb_clipped_cells > 0) {
+             if (verbose && p.nb_dual_cells + p.nb_clipped_cells > 0) {
                std::fprintf(stderr,
                             "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs (%s%d flips",
                             p.seconds_cells, p.nb_dual_cells, p.nb_clipped_cells,
@@ -78,8 +88,8 @@ void register_optimize(CLI::App& app) {
          after.extra.push_back({"iterations", static_cast<double>(r.iterations)});
          after.extra.push_back({"seconds", r.seconds});
          t.columns = {before, after};
-         if (!*quiet) std::cerr << t.to_text();
-         if (!*quiet && r.boundary_free)
+         if (!quiet) std::cerr << t.to_text();
+         if (!quiet && r.boundary_free)
            std::fprintf(stderr,
                         "free boundary: %s geometry, %d surface, %d curve, %d fixed vertices; "
                         "%d vertices moved, Hausdorff %.3e (%.2e of the diagonal, "
@@ -89,17 +99,23 @@ void register_optimize(CLI::App& app) {
                         r.nb_fixed_vertices, r.nb_boundary_moved, r.hausdorff,
                         r.hausdorff / r.diagonal, r.hausdorff_tolerance, 100 * r.volume_change,
                         r.tri_q_min_before, r.tri_q_min_after);
-         for (const auto& note : r.notes) std::cerr << "cvtmesh: note: " << note << "\n";
+         for (const auto& note : r.notes) info() << "cvtmesh: note: " << note << "\n";
          const bool capped = !r.converged && !r.kept_input;
          if (capped)
-           std::cerr << "cvtmesh: warning: '" << r.method << "' stopped at the iteration cap ("
-                     << r.iterations << " iterations) before converging; raise --max-iterations "
-                     << "or --tolerance\n";
-         std::cerr << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
-                   << " iterations, " << (r.converged ? "converged" : "not converged")
-                   << (r.kept_input ? ", input kept unchanged" : "") << ")\n";
+           info() << "cvtmesh: warning: '" << r.method << "' stopped at the iteration cap ("
+                  << r.iterations << " iterations) before converging; raise --max-iterations "
+                  << "or --tolerance\n";
+         if (!report->empty() || *format == "json") {
+           const std::string json =
+               optimize_json(r, opt->method, in->path, out->path).dump(2) + "\n";
+           if (*format == "json") std::cout << json;
+           if (!report->empty()) write_text_file(*report, json);
+         }
+         info() << "cvtmesh: wrote " << out->path << " (" << r.method << ", " << r.iterations
+                << " iterations, " << (r.converged ? "converged" : "not converged")
+                << (r.kept_input ? ", input kept unchanged" : "") << ")\n";
          const bool fell_back = r.kept_input || r.method != opt->method;
-         return *strict && (capped || fell_back) ? 6 : 0;
+         return *strict && (capped || fell_back) ? kExitStrict : kExitOk;
        }});
 }
 

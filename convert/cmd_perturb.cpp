@@ -46,7 +46,7 @@ void register_perturb(CLI::App& app) {
                           if (o->random == o->cluster) {
                             std::cerr
                                 << "cvtmesh perturb: give exactly one of --random or --cluster\n";
-                            return 2;
+                            return kExitUsage;
                           }
                           ReadOptions ro = o->in.to_read_options();
                           if (ro.dim < 0) ro.dim = 2;
@@ -64,11 +64,11 @@ void register_perturb(CLI::App& app) {
                           const Perturb2dResult pr = perturb_2d(d.tri, po);
                           write_mesh(d, o->out.path, o->out.to_write_options(d, o->in.path));
                           if (!o->svg.empty()) write_svg(d.tri, o->svg);
-                          std::cerr << "cvtmesh: perturbed " << pr.nb_moved << " vertices";
-                          if (!pr.attractor.empty()) std::cerr << " towards the " << pr.attractor;
-                          if (pr.nb_limited)
-                            std::cerr << " (" << pr.nb_limited << " moves shortened)";
-                          std::cerr << "; wrote " << o->out.path << "\n";
+                          std::ostream& log = info();
+                          log << "cvtmesh: perturbed " << pr.nb_moved << " vertices";
+                          if (!pr.attractor.empty()) log << " towards the " << pr.attractor;
+                          if (pr.nb_limited) log << " (" << pr.nb_limited << " moves shortened)";
+                          log << "; wrote " << o->out.path << "\n";
                           return 0;
                         }});
 }

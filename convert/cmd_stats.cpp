@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "convert/cli_common.h"
+#include "convert/json_report.h"
 #include "core/io/histogram_svg.h"
 #include "core/quality/quality_histogram.h"
 
@@ -47,7 +48,12 @@ void register_stats(CLI::App& app) {
                                                        : element_qualities(d.tri, Measure::kQ),
                                             *bins, l));
          }
-         std::cout << render(t, *format);
+         // One mesh: its object alone; several: the compare schema (docs/cli.md, JSON).
+         if (*format == "json")
+           std::cout << (t.columns.size() == 1 ? mesh_json(t.columns.front()) : table_json(t)).dump(2)
+                     << "\n";
+         else
+           std::cout << render(t, *format);
          if (!histogram->empty()) {
            OutputPolicy p;
            p.force = true;

@@ -6,6 +6,7 @@
 #include <new>
 #include <string>
 
+#include "convert/cli_common.h"
 #include "convert/commands.h"
 #include "convert/limits.h"
 #include "core/util/error.h"
@@ -16,34 +17,47 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "cvtmesh " CVTMESH_VERSION);
   app.require_subcommand(1);
   app.fallthrough();  // subcommands inherit it: --max-memory / --time-limit also after them
+  app.footer(
+      "Exit codes: 0 ok, 1 usage error, 2 bad input (unreadable file, refused option value), 3 "
+      "cannot write the output, 4 internal error, 5 `check` found problems, 6 `optimize "
+      "--strict` fell short.");
   cvtmesh::cli::register_commands(app);
   cvtmesh::cli::Limits limits;
   cvtmesh::cli::add_limit_options(app, limits);
+  cvtmesh::cli::add_global_options(app);
+  using namespace cvtmesh::cli;
   try {
     app.parse(argc, argv);
-    cvtmesh::cli::apply_limits(limits);
+    apply_limits(limits);
+    apply_global_options();
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help / --version exit 0; every other parse error is a usage error (CLI11's own codes,
+    // 105 to 109, are not ours).
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
   }
   try {
-    return cvtmesh::cli::run_selected(app);
+    return run_selected(app);
+  } catch (const CLI::Error& e) {
+    // A value CLI11 accepted but a subcommand could not use (e.g. --set without '=').
+    std::cerr << "cvtmesh: error: " << e.what() << "\n";
+    return kExitUsage;
   } catch (const std::bad_alloc&) {
     std::cerr << "cvtmesh: error: out of memory"
               << (limits.max_memory_mb > 0 ? " (the --max-memory limit was reached)" : "")
               << "; no output written\n";
-    return 2;
+    return kExitBadInput;
   } catch (const cvtmesh::InputError& e) {
     std::cerr << "cvtmesh: error: " << e.what() << "\n";
-    return 2;
+    return kExitBadInput;
   } catch (const cvtmesh::OutputError& e) {
     std::cerr << "cvtmesh: error: " << e.what() << "\n";
-    return 3;
+    return kExitCannotWrite;
   } catch (const cvtmesh::InvariantError& e) {
     std::cerr << "cvtmesh: internal error (mesh invariant violated, nothing written): " << e.what()
               << "\n";
-    return 4;
+    return kExitInternal;
   } catch (const std::exception& e) {
-    std::cerr << "cvtmesh: error: " << e.what() << "\n";
-    return 1;
+    std::cerr << "cvtmesh: internal error: " << e.what() << "\n";
+    return kExitInternal;
   }
 }

@@ -22,9 +22,11 @@ void add_schema_options(CLI::App* c, OptimizeOptions& o, const std::vector<std::
         [&](auto f) {
           using T = std::decay_t<decltype(o.*f)>;
           if constexpr (std::is_same_v<T, bool>) {
-            // "--no-x" turns a default-on switch off; CLI11's "!" prefix stores false.
-            const bool negated = s.flag.rfind("--no-", 0) == 0;
-            c->add_flag((negated ? "!" : "") + s.flag, o.*f, help);
+            // "--no-x" turns a default-on switch off (a callback: CLI11 prints no "{false}").
+            bool* field = &(o.*f);
+            const bool value = s.flag.rfind("--no-", 0) != 0;
+            c->add_flag_callback(
+                s.flag, [field, value] { *field = value; }, help);
           } else {
             c->add_option(s.flag + (s.name == "method" ? ",-m" : ""), o.*f, help);
           }

@@ -52,9 +52,9 @@ stats_of() {
   python3 -c '
 import json,sys
 try:
-  t=json.load(open(sys.argv[1])); c=t["columns"][0] if "columns" in t else t[0]
+  t=json.load(open(sys.argv[1])); c=t["meshes"][0] if "meshes" in t else t
   g=lambda *k: next((c[x] for x in k if x in c), float("nan"))
-  print("%.4f %.4f %.2f" % (g("q_min"), g("average_quality"), g("min_dihedral_angle","minimum_angle")))
+  print("%.4f %.4f %.2f" % (g("q_min"), g("average_quality"), g("min_angle")))
 except Exception as e:
   print("- - -")' "$1"
 }

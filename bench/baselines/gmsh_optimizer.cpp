@@ -30,7 +30,8 @@ void gmsh_optimize_mesh(MeshData& data, const std::string& method, int niter) {
     }
   } cleanup{dir, file};
   WriteOptions wo;
-  wo.binary = true;  // exact coordinates (ASCII .msh keeps 16 significant digits only)
+  wo.binary = true;    // exact coordinates (ASCII .msh keeps 16 significant digits only)
+  wo.save_all = true;  // every element: an internal round trip, not a file for other tools
   write_mesh(data, file, wo);
   GmshSession session;
   std::string previous;

@@ -210,6 +210,8 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
         if (const auto at = log[i].find(dup); at != std::string::npos)
           throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) + ")");
   });
+  ElementOrigin origin = ElementOrigin::kModel;
+  std::vector<std::array<int, 3>> file_blocks;
   try {
     gmsh_checked("cannot mesh '" + path + "'", [&] {
       if (!options.gmsh_optimize) {
@@ -238,6 +240,14 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
         const int want = options.dim > 0 ? options.dim : model_dim;
         if (!has_elements(want)) gmsh::model::mesh::generate(want);
       } else {
+        // The blocks the file holds: a .msh writer writes these and no others (write_mesh.h).
+        origin = ElementOrigin::kMeshFile;
+        for (const auto& [d, t] : ents) {
+          std::vector<int> types;
+          gmsh::model::mesh::getElementTypes(types, d, t);
+          for (int type : types) file_blocks.push_back({d, t, type});
+        }
+        std::sort(file_blocks.begin(), file_blocks.end());
         // A .msh saved with physical groups may lack the boundary elements of other surfaces.
         int want = options.dim;
         if (want < 0) want = has_elements(3) ? 3 : 2;
@@ -251,6 +261,8 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     throw;
   }
   data.model().source = path;
+  data.model().origin = origin;
+  data.model().file_blocks = std::move(file_blocks);
   // The placeholder group of our MSH 2.2 output (see write_mesh.h) is not a user's group.
   auto& groups = data.model().groups;
   groups.erase(std::remove_if(groups.begin(), groups.end(),

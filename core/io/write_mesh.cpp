@@ -5,6 +5,10 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <map>
 #include <vector>
@@ -13,6 +17,7 @@
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/read_mesh.h"
+#include "core/io/select_msh_elements.h"
 #include "core/io/tetgen_io.h"
 #include "core/util/error.h"
 
@@ -28,36 +33,6 @@ bool gmsh_writes(const std::string& ext) {
   return false;
 }
 
-// MSH 2.2 stores physical groups only through the elements' physical tags, and Gmsh writes the
-// tags only when it saves the elements of physical groups alone (Mesh.SaveAll = 0). To keep both
-// the groups and every element, entities outside every group of their dimension are put in a
-// group named kUnassignedGroup, which read_mesh drops again.
-void keep_groups_in_msh22() {
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  if (groups.empty()) {
-    gmsh::option::setNumber("Mesh.SaveAll", 1);
-    return;
-  }
-  std::map<int, std::vector<int>> uncovered;
-  std::map<int, int> max_tag;
-  for (const auto& [d, t] : groups) max_tag[d] = std::max(max_tag[d], t);
-  gmsh::vectorpair ents;
-  gmsh::model::getEntities(ents);
-  for (const auto& [d, t] : ents) {
-    std::vector<int> types, phys;
-    gmsh::model::mesh::getElementTypes(types, d, t);
-    if (types.empty()) continue;
-    gmsh::model::getPhysicalGroupsForEntity(d, t, phys);
-    if (phys.empty()) uncovered[d].push_back(t);
-  }
-  for (const auto& [d, tags] : uncovered) {
-    const int tag = gmsh::model::addPhysicalGroup(d, tags, max_tag[d] + 1);
-    gmsh::model::setPhysicalName(d, tag, kUnassignedGroup);
-  }
-  gmsh::option::setNumber("Mesh.SaveAll", 0);
-}
-
 void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::string& target,
                      const std::string& ext, const WriteOptions& o) {
   GmshSession session;
@@ -71,18 +46,38 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
     if (!session.owns() && !previous.empty()) gmsh::model::setCurrent(previous);
   };
   try {
-    const auto written = mesh_to_gmsh(data, "cvtmesh_output");
+    // A .msh holds what Gmsh would save of this model (select_msh_elements.h); per-element data
+    // covers every written element, numbered in file order, as meshio reads it.
+    const bool msh = ext == ".msh";
+    MshSelection selection;
+    bool save_all = true;
+    std::vector<ElementField> fields;
+    std::vector<std::size_t> field_tags;
+    if (msh) {
+      selection = select_msh_elements(data, o.save_all);
+      save_all = selection.save_all;
+      if (o.msh_version < 3 && selection.outside_groups)
+        throw OutputError("cannot write '" + target +
+                          "' as MSH 2.2: some of its elements are in no physical group, and MSH "
+                          "2.2 stores groups only as the tags of elements that have one; write "
+                          "MSH 4.1 (--msh-version 4.1) or put those entities in a physical group");
+      if (!o.fields.empty()) {
+        const std::size_t n = number_in_file_order(selection.data);
+        fields = fields_on_all_elements(selection, o.fields, n);
+        for (std::size_t t = 1; t <= n; ++t) field_tags.push_back(t);
+      }
+    }
+    mesh_to_gmsh(msh ? selection.data : data, "cvtmesh_output");
     made = true;
     gmsh_checked("cannot write '" + target + "'", [&] {
       gmsh::option::setNumber("Mesh.MshFileVersion", o.msh_version);
       gmsh::option::setNumber("Mesh.Binary", o.binary ? 1 : 0);
-      gmsh::option::setNumber("Mesh.SaveAll", 1);
+      gmsh::option::setNumber("Mesh.SaveAll", save_all ? 1 : 0);
       gmsh::option::setNumber("Mesh.SaveParametric", 0);
-      if (ext == ".msh" && o.msh_version < 3) keep_groups_in_msh22();
       gmsh::write(tmp);
-      if (ext == ".msh") append_msh_periodic(tmp, data.model().periodic, o.msh_version, o.binary);
-      if (ext == ".msh" && !o.fields.empty()) {
-        views = add_element_views(o.fields, written.element_tags);
+      if (msh) append_msh_periodic(tmp, data.model().periodic, o.msh_version, o.binary);
+      if (msh && !fields.empty()) {
+        views = add_element_views(fields, field_tags);
         gmsh::option::setNumber("PostProcessing.SaveMesh", 0);
         gmsh::option::setNumber("PostProcessing.SaveInterpolationMatrices", 0);
         for (int v : views) gmsh::view::write(v, tmp, true);
@@ -117,10 +112,65 @@ bool is_tetgen(const std::string& ext) {
   return ext == ".node" || ext == ".ele";
 }
 
-// Formats that store per-element fields: .msh ($ElementData), VTK (cell data), TetGen (.ele
-// attributes).
+// Formats that store per-element fields: .msh ($ElementData), VTK (cell data). Not TetGen's
+// .ele: its attributes are real numbers for TetGen, but meshio reads them as integers and fails.
 bool holds_fields(const std::string& ext) {
-  return ext == ".msh" || ext == ".vtk" || ext == ".vtu" || is_tetgen(ext);
+  return ext == ".msh" || ext == ".vtk" || ext == ".vtu";
+}
+
+constexpr const char* kOptMarker = "// Written by cvtmesh";
+
+// PATH.opt, merged by Gmsh when it opens PATH: the first field's view alone, over its range.
+std::string quality_opt(const std::string& path, const std::vector<ElementField>& fields) {
+  double lo = 0, hi = 0;
+  bool any = false;
+  for (double v : fields.front().values)
+    if (std::isfinite(v)) {
+      lo = any ? std::min(lo, v) : v;
+      hi = any ? std::max(hi, v) : v;
+      any = true;
+    }
+  if (hi <= lo) hi = lo + 1e-6;
+  char range[128];
+  std::snprintf(range, sizeof range, "%.6g, %.6g", lo, hi);
+  std::string s = std::string(kOptMarker) + " with " + path +
+                  "; Gmsh merges it when it opens that file.\n// The view \"" +
+                  fields.front().name + "\" alone, coloured over the range of its values [" +
+                  range + "].\n";
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "View[0].Visible = 1;\nView[0].RangeType = 2;\nView[0].CustomMin = %.17g;\n"
+                "View[0].CustomMax = %.17g;\nView[0].SaturateValues = 1;\n",
+                lo, hi);
+  s += buf;
+  for (std::size_t v = 1; v < fields.size(); ++v)
+    s += "View[" + std::to_string(v) + "].Visible = 0;\n";
+  return s;
+}
+
+bool is_our_opt(const std::string& opt) {
+  std::ifstream in(opt);
+  std::string first;
+  return in && std::getline(in, first) && first.rfind(kOptMarker, 0) == 0;
+}
+
+// Writes PATH.opt with fields, or removes a stale one of ours without; a user's own is kept.
+void write_companion_opt(const std::string& path, const WriteOptions& o) {
+  const std::string opt = path + ".opt";
+  std::error_code ec;
+  const bool exists = std::filesystem::exists(opt, ec);
+  if (exists && !is_our_opt(opt)) return;
+  if (o.fields.empty()) {
+    if (exists) std::filesystem::remove(opt, ec);
+    return;
+  }
+  AtomicFile out(opt);
+  {
+    std::ofstream f(out.temp_path());
+    f << quality_opt(std::filesystem::path(path).filename().string(), o.fields);
+    if (!f.flush()) throw OutputError("cannot write '" + opt + "'");
+  }
+  out.commit();
 }
 
 // TetGen/Triangle: X.node, X.ele and X.face (X.edge in 2D) are written to temporaries and only
@@ -155,9 +205,11 @@ void check_can_write(const std::string& path, const WriteOptions& options) {
     throw OutputError("cannot write '" + path + "': unknown output format '" + ext +
                       "' (supported: " + supported_write_formats() + ")");
   if (!options.fields.empty() && !holds_fields(ext))
-    throw OutputError("cannot write '" + path + "': the " + ext +
-                      " format cannot hold per-element data (--quality); use .msh, .vtk, .vtu or "
-                      ".node");
+    throw OutputError("cannot write '" + path + "': the " + ext + " format " +
+                      (is_tetgen(ext) ? "holds per-element data only as attributes that meshio "
+                                        "reads as integers"
+                                      : "cannot hold per-element data") +
+                      " (--quality); use .msh, .vtk or .vtu");
   if (options.msh_version != 4.1 && options.msh_version != 2.2)
     throw OutputError("unsupported .msh version " + std::to_string(options.msh_version) +
                       " (use 4.1 or 2.2)");
@@ -189,6 +241,7 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
       write_with_gmsh(data, out.temp_path(), path, ext, options);
   });
   out.commit();
+  if (ext == ".msh") write_companion_opt(path, options);
 }
 
 }  // namespace cvtmesh

@@ -10,17 +10,25 @@
 
 namespace cvtmesh {
 
+// The placeholder group of the MSH 2.2 files of cvtmesh 0.1 (elements in no group); read_mesh
+// drops it. No longer written.
 inline constexpr const char* kUnassignedGroup = "cvtmesh:unassigned";
 
 struct WriteOptions {
   double msh_version = 4.1;          // 4.1 or 2.2
   bool binary = false;               // binary .msh
+  bool save_all = false;             // .msh: every element, not only what Gmsh would save
   std::vector<ElementField> fields;  // per-element data ($ElementData / VTK cell data)
   OutputPolicy policy;
 };
 
-// MSH 2.2 keeps physical groups only on elements that belong to one: entities in no group are
-// written in an extra group named kUnassignedGroup, which read_mesh drops.
+// A .msh holds the elements Gmsh would save (core/io/select_msh_elements.h: the physical groups'
+// of a model, the blocks a .msh input held; everything with save_all). MSH 2.2 cannot hold
+// elements outside physical groups next to groups: refused (OutputError) rather than invent one.
+// With fields, the $ElementData covers every written element (NaN on those that are not cells of
+// the mesh dimension), elements numbered in file order, and a companion PATH.opt (which Gmsh
+// merges when it opens PATH) shows the first field alone over the range of its values; a stale
+// PATH.opt of ours is removed when writing without fields, a user's own is left alone.
 // Throws OutputError (cannot write, refused) or InputError (format cannot hold this mesh).
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 

@@ -2,6 +2,7 @@
 // physical groups, lower-dimensional elements (points, lines), original node/element tags.
 // Everything is kept so that .msh -> mesh -> .msh is exact.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -41,6 +42,14 @@ struct PeriodicLink {
   std::vector<std::size_t> node_tags, master_node_tags;
 };
 
+// Where the elements came from: it decides which ones a .msh writer keeps, as Gmsh would save
+// the model (core/io/select_msh_elements.h).
+enum class ElementOrigin {
+  kBuilt,     // read by our own readers (TetGen, Medit, VTK, surfaces) or built in memory: all
+  kModel,     // meshed by Gmsh from a .geo / CAD model: the elements of its physical groups
+  kMeshFile,  // read from a .msh (or another mesh file Gmsh opens): the blocks that file held
+};
+
 struct ModelInfo {
   std::string name;
   std::string source;                 // path of the file it came from ("" if built in memory)
@@ -48,6 +57,10 @@ struct ModelInfo {
   std::vector<PhysicalGroup> groups;
   std::vector<ElementBlock> extra;     // elements of dimension < mesh dimension - 1
   std::vector<PeriodicLink> periodic;  // kept, their vertices fixed (core/mesh/pin_vertices.h)
+  ElementOrigin origin = ElementOrigin::kBuilt;
+  // kMeshFile: the (dim, entity tag, Gmsh element type) blocks the file held, before the reader
+  // restored missing boundary facets (gmsh_missing_facets.h); sorted.
+  std::vector<std::array<int, 3>> file_blocks;
 };
 
 }  // namespace cvtmesh

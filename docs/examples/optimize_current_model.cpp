@@ -4,7 +4,9 @@
 //
 //   optimize_current_model [model.geo] [out.msh] [method]
 //
-// Build: link cvtmesh_core (see plugin/CMakeLists.txt, target cvtmesh_example_optimize).
+// Build: against the installed package, this directory is a CMake project (docs/examples/
+// CMakeLists.txt: find_package(cvtmesh), target cvtmesh::gmsh_frontend); in the source tree,
+// plugin/CMakeLists.txt builds it as cvtmesh_example_optimize.
 #include <gmsh.h>
 
 #include <exception>
@@ -14,7 +16,15 @@
 #include "plugin/gmsh_inprocess.h"
 
 int main(int argc, char** argv) {
+#ifdef CVTMESH_SOURCE_DIR
   const std::string model = argc > 1 ? argv[1] : CVTMESH_SOURCE_DIR "/geo/cube_sphere.geo";
+#else
+  if (argc < 2) {
+    std::cerr << "usage: optimize_current_model model.geo [out.msh] [method]\n";
+    return 1;
+  }
+  const std::string model = argv[1];
+#endif
   const std::string out = argc > 2 ? argv[2] : "cube_sphere_cvt.msh";
   gmsh::initialize();
   try {

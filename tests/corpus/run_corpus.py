@@ -76,7 +76,7 @@ def stats(path):
     if rc != 0:
         fail("stats %s: exit %d: %s" % (path, rc, err.strip()))
         return None
-    return json.loads(out)[0]
+    return json.loads(out)  # one object per mesh (docs/cli.md, JSON)
 
 
 def crash(rc, err, what):
@@ -117,8 +117,7 @@ if not failures:
         fail("check of the output: exit %d: %s %s" % (rc, o.strip(), err.strip()))
     si, so = stats(inp), stats(out)
     if si and so:
-        dihedral = si.get("min_dihedral_angle") is not None
-        lo, hi = ("min_dihedral_angle", "max_dihedral_angle") if dihedral else ("minimum_angle", "maximum_angle")
+        lo, hi = "min_angle", "max_angle"  # dihedral in 3D, planar in 2D
         print("%s: Q_min %.4f -> %.4f, avg %.4f -> %.4f, min angle %.2f -> %.2f, max angle %.2f -> %.2f" % (
             a.model, si["q_min"], so["q_min"], si["average_quality"], so["average_quality"], si[lo], so[lo], si[hi], so[hi]))
         eps = 1e-9

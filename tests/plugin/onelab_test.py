@@ -68,7 +68,7 @@ def stats(path):
     """The quality table column of a mesh file, measured by the cvtmesh CLI."""
     run = subprocess.run([CLI, "stats", path, "--format", "json"], capture_output=True,
                          text=True, check=True)
-    return json.loads(run.stdout)[0]
+    return json.loads(run.stdout)  # one object per mesh (docs/cli.md, JSON)
 
 
 class Onelab(unittest.TestCase):

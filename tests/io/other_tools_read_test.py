@@ -1,0 +1,224 @@
+#!/usr/bin/env python3
+"""Every format cvtmesh writes, read by the tools users have: Debian's meshio (points, cells,
+physical groups, cell data) and Gmsh itself (the gmsh Python module: element counts, physical
+groups, the --quality views and the companion .opt).
+
+Usage: other_tools_read_test.py CVTMESH_CLI SOURCE_DIR   (run with /usr/bin/python3)
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import warnings
+
+import meshio
+import gmsh
+
+CLI, SRC = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+GEO = os.path.join(SRC, "geo")
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def run(*args):
+    p = subprocess.run([CLI, *args], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError(f"cvtmesh {' '.join(args)} exited {p.returncode}: {p.stderr}")
+    return p
+
+
+def read_meshio(path):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return meshio.read(path)
+
+
+def blocks(m):
+    out = {}
+    for c in m.cells:
+        out[c.type] = out.get(c.type, 0) + len(c.data)
+    return out
+
+
+def gmsh_summary(path):
+    """Counts of elements by dimension, physical groups and views as Gmsh sees them."""
+    gmsh.initialize(["gmsh", "-nopopup"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        gmsh.open(path)
+        counts = {}
+        for d in range(4):
+            types, tags, _ = gmsh.model.mesh.getElements(d)
+            counts[d] = sum(len(t) for t in tags)
+        groups = {}
+        for d, t in gmsh.model.getPhysicalGroups():
+            groups[(d, t)] = gmsh.model.getPhysicalName(d, t)
+        views = []
+        for v in gmsh.view.getTags():
+            name = gmsh.option.getString(f"View[{gmsh.view.getIndex(v)}].Name")
+            visible = gmsh.option.getNumber(f"View[{gmsh.view.getIndex(v)}].Visible")
+            views.append((name, visible,
+                          gmsh.option.getNumber(f"View[{gmsh.view.getIndex(v)}].RangeType"),
+                          gmsh.option.getNumber(f"View[{gmsh.view.getIndex(v)}].CustomMin"),
+                          gmsh.option.getNumber(f"View[{gmsh.view.getIndex(v)}].CustomMax")))
+        return counts, groups, views
+    finally:
+        gmsh.finalize()
+
+
+tmp = tempfile.mkdtemp(prefix="cvtmesh-tools-")
+cs = os.path.join(GEO, "cube_sphere.geo")
+quad = os.path.join(GEO, "quad.geo")
+
+# ---- .msh from a .geo with physical groups: only the groups' elements, like Gmsh --------------
+for version in ("4.1", "2.2"):
+    for binary in ([], ["--binary"]):
+        out = os.path.join(tmp, f"cs_{version}{'b' if binary else 'a'}.msh")
+        run("convert", cs, out, "--msh-version", version, *binary)
+        m = read_meshio(out)
+        b = blocks(m)
+        tag = f"cube_sphere MSH {version}{' binary' if binary else ''}"
+        check(b.get("tetra", 0) > 20000, f"{tag}: tetra read by meshio ({b})")
+        check("gmsh:physical" in m.cell_data, f"{tag}: gmsh:physical in meshio's cell data")
+        names = set(m.field_data)
+        check({"fluid", "ball_surface", "cube_faces"} <= names,
+              f"{tag}: physical names {sorted(names)}")
+        check(not any(n.startswith("cvtmesh") for n in names), f"{tag}: no invented group {names}")
+        phys = {int(v) for arr in m.cell_data["gmsh:physical"] for v in arr}
+        check(0 not in phys, f"{tag}: every element in a physical group ({sorted(phys)})")
+        counts, groups, _ = gmsh_summary(out)
+        check(counts[3] == b.get("tetra", -1), f"{tag}: Gmsh reads {counts[3]} tets, meshio "
+              f"{b.get('tetra')}")
+        check(set(groups.values()) == {"fluid", "ball_surface", "cube_faces"},
+              f"{tag}: Gmsh's physical groups {groups}")
+
+# Gmsh's own output of the same model: the same blocks.
+gmsh.initialize(["gmsh", "-nopopup"])
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.open(cs)
+gmsh.model.mesh.generate(3)
+ref = os.path.join(tmp, "gmsh_own.msh")
+gmsh.write(ref)
+gmsh.finalize()
+own, ours = blocks(read_meshio(ref)), blocks(read_meshio(os.path.join(tmp, "cs_4.1a.msh")))
+check(set(own) == set(ours), f"cell types as Gmsh's own output: {own} vs {ours}")
+check(own.get("triangle") == ours.get("triangle"),
+      f"boundary triangles as Gmsh's own output: {own.get('triangle')} vs {ours.get('triangle')}")
+
+# --save-all: every element, also those outside the groups (MSH 4.1 only).
+out = os.path.join(tmp, "cs_all.msh")
+run("convert", cs, out, "--save-all")
+all_counts, _, _ = gmsh_summary(out)
+some_counts, _, _ = gmsh_summary(os.path.join(tmp, "cs_4.1a.msh"))
+check(all_counts[1] > some_counts[1], f"--save-all writes the curves too ({all_counts} vs "
+      f"{some_counts})")
+
+# ---- .msh input: the blocks it had and no others ---------------------------------------------
+# A file with physical groups, saved by Gmsh (only the groups' elements): optimize and convert
+# keep exactly its element types and counts of lower-dimensional elements.
+src = os.path.join(tmp, "cs_4.1a.msh")
+src_blocks = blocks(read_meshio(src))
+for version in ("4.1", "2.2"):
+    out = os.path.join(tmp, f"opt_{version}.msh")
+    run("optimize", src, "-o", out, "--max-iterations", "3", "-q", "--msh-version", version)
+    b = blocks(read_meshio(out))
+    check(set(b) == set(src_blocks), f"optimize MSH {version}: cell types {b} vs input {src_blocks}")
+    for t in ("vertex", "line", "triangle"):
+        check(b.get(t) == src_blocks.get(t),
+              f"optimize MSH {version}: {t} count {b.get(t)} vs input {src_blocks.get(t)}")
+    m = read_meshio(out)
+    check(not any(n.startswith("cvtmesh") for n in m.field_data),
+          f"optimize MSH {version}: no invented group {list(m.field_data)}")
+
+# A file of tets only (no boundary triangles): none are added.
+tets_only = os.path.join(tmp, "tets_only.msh")
+m = read_meshio(src)
+meshio.write(tets_only, meshio.Mesh(m.points, [("tetra", m.cells_dict["tetra"])]),
+             file_format="gmsh22", binary=False)
+out = os.path.join(tmp, "tets_only_out.msh")
+run("convert", tets_only, out)
+b = blocks(read_meshio(out))
+check(set(b) == {"tetra"}, f"a tets-only .msh stays tets only: {b}")
+
+# ---- --quality: cell data meshio reads per block, views Gmsh shows with the .opt --------------
+for version in ("4.1", "2.2"):
+    for binary in ([], ["--binary"]):
+        for model in (cs, quad):
+            out = os.path.join(tmp, f"q_{os.path.basename(model)}_{version}{'b' if binary else ''}.msh")
+            run("convert", model, out, "--quality", "--msh-version", version, *binary)
+            tag = f"--quality {os.path.basename(model)} MSH {version}{' binary' if binary else ''}"
+            main = "tetra" if model == cs else "triangle"
+            if version == "2.2":
+                # meshio 5.0 (Debian 12) cannot read any $ElementData of MSH 2.2: its 2.2 reader
+                # splits the data by len() of (type, array) tuples, i.e. by 2. Gmsh only here.
+                counts, _, views = gmsh_summary(out)
+                check(len(views) == 3 and views[0][1] == 1 and views[1][1] == 0,
+                      f"{tag}: Gmsh reads 3 views, Q alone visible ({views})")
+                continue
+            m = read_meshio(out)
+            qkey = [k for k in m.cell_data if k.startswith("Q")]
+            check(len(qkey) == 1, f"{tag}: one Q field in meshio's cell data ({list(m.cell_data)})")
+            if qkey:
+                for c, v in zip(m.cells, m.cell_data[qkey[0]]):
+                    check(len(v) == len(c.data), f"{tag}: Q per {c.type} block")
+                    if c.type == main:
+                        check(all(0 < x <= 1 + 1e-12 for x in v), f"{tag}: Q of the {main}s in (0, 1]")
+                    else:
+                        check(all(math.isnan(x) for x in v), f"{tag}: Q of {c.type} is NaN")
+            counts, _, views = gmsh_summary(out)
+            check(len(views) == 3, f"{tag}: Gmsh reads 3 views ({views})")
+            if len(views) == 3:
+                check(views[0][1] == 1 and views[1][1] == 0 and views[2][1] == 0,
+                      f"{tag}: the .opt shows the Q view alone ({views})")
+                qs = [x for c, v in zip(m.cells, m.cell_data[qkey[0]]) if c.type == main for x in v]
+                check(views[0][2] == 2 and abs(views[0][3] - min(qs)) < 1e-5 and
+                      abs(views[0][4] - max(qs)) < 1e-5,
+                      f"{tag}: the .opt fits the colour range to Q ({views[0]}, data "
+                      f"[{min(qs)}, {max(qs)}])")
+            check(os.path.exists(out + ".opt"), f"{tag}: companion .opt written")
+
+# Writing again without --quality removes our stale .opt.
+out = os.path.join(tmp, "q_cube_sphere.geo_4.1.msh")
+run("convert", cs, out)
+check(not os.path.exists(out + ".opt"), "a stale .opt of ours is removed")
+
+# ---- The other formats -----------------------------------------------------------------------
+for ext, quality in ((".vtk", True), (".vtu", True), (".node", False), (".mesh", False),
+                     (".stl", False), (".off", False), (".obj", False), (".ply", False)):
+    out = os.path.join(tmp, "cs" + ext)
+    run("convert", cs, out, *(["--quality"] if quality else []))
+    path = out if ext != ".node" else os.path.join(tmp, "cs.ele")
+    try:
+        m = read_meshio(path)
+    except Exception as e:  # noqa: BLE001 - the failure is what this test reports
+        check(False, f"{ext}: meshio cannot read it: {e}")
+        continue
+    b = blocks(m)
+    surface = ext in (".stl", ".off", ".obj", ".ply")
+    check(b.get("triangle" if surface else "tetra", 0) > (1000 if surface else 20000),
+          f"{ext}: cells read by meshio {b}")
+    check(len(m.points) > 1000, f"{ext}: points read by meshio")
+    if quality:
+        for key in m.cell_data:
+            for c, v in zip(m.cells, m.cell_data[key]):
+                check(len(v) == len(c.data), f"{ext}: cell data {key} per block")
+        check(any(k.startswith("Q") for k in m.cell_data), f"{ext}: Q in cell data {list(m.cell_data)}")
+    if ext in (".mesh", ".stl", ".vtk"):  # the ones Gmsh opens (not .vtu, .off, .obj, .ply)
+        counts, _, _ = gmsh_summary(out)
+        check(counts[2 if surface else 3] > 0, f"{ext}: Gmsh reads its elements ({counts})")
+
+# --quality on TetGen output is refused before anything is written (meshio reads its attributes
+# as integers).
+p = subprocess.run([CLI, "convert", cs, os.path.join(tmp, "q.node"), "--quality"],
+                   capture_output=True, text=True)
+check(p.returncode != 0 and "meshio" in p.stderr and not os.path.exists(os.path.join(tmp, "q.ele")),
+      f".node --quality refused: {p.returncode} {p.stderr}")
+
+print(f"{len(failures)} failures")
+sys.exit(1 if failures else 0)
