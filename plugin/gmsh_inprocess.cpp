@@ -113,6 +113,8 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
   GmshQualityResult out;
   out.stats =
       data.dim == 3 ? quality_stats(data.tet, "current") : quality_stats(data.tri, "current");
+  set_fe_measures(out.stats, data.dim == 3 ? fe_measures(data.tet, options.fe)
+                                           : fe_measures(data.tri, options.fe));
   if (options.quality_views) {
     remove_quality_views();
     out.views = add_element_views(quality_fields(data),
@@ -127,7 +129,12 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
   MeshData data = gmsh_read_current(options);
   GmshOptimizeOptions o = options;
   o.optimize = resolve(o.optimize, data.dim);
-  const OptimizeResult r = optimize(data, o.optimize);
+  const FeMeasures fe_before =
+      data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe);
+  OptimizeResult r = optimize(data, o.optimize);
+  set_fe_measures(r.before, fe_before);
+  set_fe_measures(r.after,
+                  data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe));
   return gmsh_write_back(data, r, o);
 }
 

@@ -26,6 +26,7 @@
 #include "core/pipeline/find_structural_defects.h"
 #include "core/quality/worse_than.h"
 #include "core/quality/quality_stats.h"
+#include "core/quality/time_step_guard.h"
 #include "core/util/error.h"
 #include "core/util/thread_count.h"
 
@@ -132,12 +133,25 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
   co.maxmin = o.polish_maxmin;
   co.maxmin_options.passes = 1;
   co.keep_min_q = o.polish_maxmin;
+  // The time-step guard and objective (issue 16).
+  const bool dt_objective = o.objective == "dt";
+  const double dt_factor = dt_objective        ? std::numeric_limits<double>::infinity()
+                           : o.polish_dt_guard ? o.polish_dt_floor
+                                               : 0;
+  co.dt_guard_factor = dt_factor;
+  if (dt_objective) {
+    co.smoothing.measure = Measure::kTimeStep;
+    co.swap.measure = Measure::kTimeStep;
+    co.swap.quality_threshold = std::numeric_limits<double>::infinity();
+  }
   const CombinedStats st = combined_optimize(
       mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
   r.iterations = st.iterations;
   r.converged = st.converged;
   if (o.polish_repair) {
-    repair_slivers(mesh, RepairOptions{});
+    RepairOptions ro;
+    if (dt_factor > 0) ro.dt_guard = ro.smoothing.dt_guard = time_step_guard(mesh, dt_factor);
+    repair_slivers(mesh, ro);
     if (o.progress) report(o, "repair", 1, 0, 0, quality_stats(mesh, ""));
   }
 }
