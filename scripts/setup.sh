@@ -11,6 +11,7 @@ PKGS=(
   libcli11-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev
   libcgal-dev
   pybind11-dev python3-dev python3
+  python3-scipy python3-meshio
   xvfb xauth xdotool imagemagick
   clang libclang-rt-14-dev
 )

@@ -26,7 +26,6 @@
 #include "core/pipeline/find_structural_defects.h"
 #include "core/quality/worse_than.h"
 #include "core/quality/quality_stats.h"
-#include "core/quality/time_step_guard.h"
 #include "core/util/error.h"
 #include "core/util/thread_count.h"
 
@@ -149,9 +148,9 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
   r.iterations = st.iterations;
   r.converged = st.converged;
   if (o.polish_repair) {
-    RepairOptions ro;
-    if (dt_factor > 0) ro.dt_guard = ro.smoothing.dt_guard = time_step_guard(mesh, dt_factor);
-    repair_slivers(mesh, ro);
+    // Not under the time-step guard: refusing the insertion of a vertex into a locked sliver
+    // (which makes small tets) kept a Q 0.05 tet at ~100k tets (Q_min 0.050 instead of 0.512).
+    repair_slivers(mesh, RepairOptions{});
     if (o.progress) report(o, "repair", 1, 0, 0, quality_stats(mesh, ""));
   }
 }

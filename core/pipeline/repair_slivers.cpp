@@ -263,31 +263,6 @@ Candidate try_flip(const TetMesh& m, const ConstrainedFaces& constrained, int t,
   return c;
 }
 
-// The time-step guard on a candidate `after` of the copy `local`: the copy's smallest element
-// step, and the nodal steps of its vertices (the mesh's sums `steps` plus the copy's change; a
-// new vertex, appended after the copy's, has all its tets in the copy).
-bool repair_time_step_allows(const TimeStepGuard& g, const TetMesh& mesh, const LocalMesh& local,
-                             const TetMesh& after, const VertexTimeSteps& steps) {
-  if (!time_step_allows(g, min_time_step(local.mesh), min_time_step(after))) return false;
-  const int n0 = local.mesh.nb_vertices();
-  auto global = [&](int v) {
-    return v < n0 ? local.global_vertex[v] : mesh.nb_vertices() + v - n0;
-  };
-  VertexStepChange change;
-  auto add = [&](const TetMesh& m, double sign) {
-    for (int t = 0; t < m.nb_tets(); ++t) {
-      const int* tv = tet_of(m, t);
-      if (tv[0] < 0) continue;
-      const int ids[4] = {global(tv[0]), global(tv[1]), global(tv[2]), global(tv[3])};
-      const double* p[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
-      change.add(ids, p, sign);
-    }
-  };
-  add(local.mesh, -1);
-  add(after, +1);
-  return change.allows(g, steps);
-}
-
 }  // namespace
 
 RepairStats repair_slivers(TetMesh& mesh, const RepairOptions& o) {
@@ -301,9 +276,6 @@ RepairStats repair_slivers(TetMesh& mesh, const RepairOptions& o) {
   stats.angle_min_before = start.angle;
   const ConstrainedFaces constrained = constrained_faces(mesh);
   std::vector<int> free_slots;
-  // The mesh's nodal sums for the time-step guard, recomputed after a commit when needed.
-  VertexTimeSteps dt_steps;
-  bool dt_dirty = true;
   struct Entry {
     double objective;
     int t;
@@ -349,11 +321,6 @@ RepairStats repair_slivers(TetMesh& mesh, const RepairOptions& o) {
         const auto [was, now] = changed_scores(local.mesh, c.mesh);
         if (!(now.objective > was.objective + o.min_gain) || now.q < was.q || now.angle < was.angle)
           return;
-        if (o.dt_guard.on) {
-          if (dt_dirty) dt_steps = vertex_time_steps(mesh);
-          dt_dirty = false;
-          if (!repair_time_step_allows(o.dt_guard, mesh, local, c.mesh, dt_steps)) return;
-        }
         if (!best.valid || now.objective > best_score.objective) {
           best = std::move(c);
           best_score = now;
@@ -364,7 +331,6 @@ RepairStats repair_slivers(TetMesh& mesh, const RepairOptions& o) {
         for (int e = 0; e < 10; ++e) offer(try_flip(local.mesh, local_constrained, 0, e, o));
       if (!best.valid) continue;
       if (!commit_local_mesh(mesh, local, best.mesh, &free_slots)) continue;
-      dt_dirty = true;
       ++committed;
       touched.resize(static_cast<std::size_t>(mesh.nb_vertices()), pass + 1);
       for (int v : local.global_vertex) touched[v] = pass + 1;

@@ -16,7 +16,6 @@
 // oriented (exact orient3d). Serial and in a fixed order: the result depends on the input only.
 #pragma once
 #include "core/mesh/tet_mesh.h"
-#include "core/quality/time_step_guard.h"
 #include "core/smoothing/smooth_maxmin3.h"
 
 namespace cvtmesh {
@@ -39,9 +38,6 @@ struct RepairOptions {
     return m;
   }();
   int rounds = 2;
-  // The time-step guard (time_step_guard.h; off by default): a result is also refused when the
-  // copy's smallest element time step falls below min(its value before, floor).
-  TimeStepGuard dt_guard;
 };
 
 struct RepairStats {
