@@ -128,6 +128,24 @@ void write_text_file(const std::string& path, const std::string& text) {
   out.commit();
 }
 
+void add_fe_options(CLI::App* c, FeOptions& fe) {
+  c->add_option("--fe-measures", fe.mode,
+                "the FE measures (time step, element time step, CG iterations, stiffness "
+                "condition): auto (meshes up to " +
+                    std::to_string(kFeMeasuresAutoLimit) + " elements), on, off")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
+  c->add_option("--wave-speed", fe.wave_speed,
+                "wave speed c of the explicit time steps (they scale as 1/c; default 1)")
+      ->check(CLI::PositiveNumber);
+}
+
+void add_fe_measures(QualityStats& s, const MeshData& d, const FeOptions& fe) {
+  const FeMeasures m = d.dim == 3 ? fe_measures(d.tet, fe) : fe_measures(d.tri, fe);
+  if (!m.measured && fe.mode == "auto")
+    std::cerr << "cvtmesh: note: FE measures of '" << s.label << "' skipped: " << m.skipped << "\n";
+  set_fe_measures(s, m);
+}
+
 std::string render(const QualityTable& t, const std::string& format) {
   if (format == "markdown") return t.to_markdown();
   if (format == "json") return table_json(t).dump(2) + "\n";

@@ -9,6 +9,7 @@
 
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
+#include "core/quality/fe_measures.h"
 #include "core/quality/quality_table.h"
 
 namespace cvtmesh::cli {
@@ -68,6 +69,12 @@ struct OutputOpts {
   WriteOptions to_write_options(const MeshData& d, const std::string& input) const;
 };
 void add_output_flags(CLI::App* c, OutputOpts& o);
+
+// The FE measures of the quality tables (stats, compare, bench; core/quality/fe_measures.h):
+// --fe-measures auto|on|off and --wave-speed, declared here once.
+void add_fe_options(CLI::App* c, FeOptions& fe);
+// Sets s's FE measures of mesh d (a note on stderr when they are skipped for the size).
+void add_fe_measures(QualityStats& s, const MeshData& d, const FeOptions& fe);
 
 // Writes a text file (a JSON report) atomically; OutputError if it cannot.
 void write_text_file(const std::string& path, const std::string& text);

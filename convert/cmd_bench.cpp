@@ -36,7 +36,11 @@ struct Row {
   double seconds = 0, peak_mb = 0;
   int iterations = 0;
   double q_avg = 0, q_min = 0, min_dihedral = 0, bad_pct = 0;
-  double s_per_it = 0;         // Lloyd seconds per iteration (0: no Lloyd phase)
+  double s_per_it = 0;  // Lloyd seconds per iteration (0: no Lloyd phase)
+  // The FE measures of the output (core/quality/fe_measures.h) and their cost, not in `seconds`.
+  bool fe_measured = false;
+  double time_step = 0, element_time_step = 0, fe_seconds = 0;
+  long cg_iterations = 0;
   std::vector<double> energy;  // Lloyd energy before each iteration
   bool ok = false;
   std::string error;
@@ -60,6 +64,11 @@ nlohmann::json row_to_json(const Row& r) {
           {"min_dihedral", r.min_dihedral},
           {"bad_pct", r.bad_pct},
           {"s_per_it", r.s_per_it},
+          {"fe_measured", r.fe_measured},
+          {"time_step", r.time_step},
+          {"element_time_step", r.element_time_step},
+          {"cg_iterations", r.cg_iterations},
+          {"fe_seconds", r.fe_seconds},
           {"energy", r.energy}};
 }
 
@@ -82,6 +91,11 @@ void row_from_json(const std::string& text, Row& row) {
     row.min_dihedral = j.at("min_dihedral").get<double>();
     row.bad_pct = j.at("bad_pct").get<double>();
     row.s_per_it = j.at("s_per_it").get<double>();
+    row.fe_measured = j.at("fe_measured").get<bool>();
+    row.time_step = j.at("time_step").get<double>();
+    row.element_time_step = j.at("element_time_step").get<double>();
+    row.cg_iterations = j.at("cg_iterations").get<long>();
+    row.fe_seconds = j.at("fe_seconds").get<double>();
     row.energy = j.at("energy").get<std::vector<double>>();
   } catch (const nlohmann::json::exception& e) {
     row.ok = false;
@@ -136,6 +150,12 @@ Row run_isolated(const std::string& input, const std::string& method,
   return row;
 }
 
+// The FE options of the run (--fe-measures, --wave-speed), set once before the rows run.
+FeOptions& bench_fe() {
+  static FeOptions fe;
+  return fe;
+}
+
 void fill_quality(Row& r, const TetMesh& m) {
   const QualityStats s = quality_stats(m, "");
   r.nb_tets_out = s.nb_elements;
@@ -143,6 +163,12 @@ void fill_quality(Row& r, const TetMesh& m) {
   r.q_min = s.q_min;
   r.min_dihedral = s.min_angle;
   r.bad_pct = s.bad_pct;
+  const FeMeasures fe = fe_measures(m, bench_fe());
+  r.fe_measured = fe.measured;
+  r.time_step = fe.time_step;
+  r.element_time_step = fe.element_time_step;
+  r.cg_iterations = fe.cg_iterations;
+  r.fe_seconds = fe.seconds;
 }
 
 double since(Clock::time_point t0) {
@@ -201,6 +227,7 @@ void register_bench(CLI::App& app) {
               "skip the rows that time Gmsh's meshing (with and without its optimizer)");
   c->add_flag("!--no-peers", bo->peers, "skip the TetGen, Netgen and CGAL rows");
   add_schema_options(c, *opt, {"method"});  // the schema's options (not --method)
+  add_fe_options(c, bench_fe());
   commands().push_back(
       {c, [bo, opt] {
          struct Input {
@@ -354,20 +381,26 @@ void register_bench(CLI::App& app) {
          }
          std::printf(
              "| input | method | tets in | tets out | seconds | s / Lloyd it | peak MB | "
-             "iterations | avg Q | Q_min | min dihedral | bad %% |\n");
-         std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+             "iterations | avg Q | Q_min | min dihedral | bad %% | time step | element time step | "
+             "CG its | FE measures s |\n");
+         std::printf(
+             "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
          for (const auto& r : rows) {
            if (!r.ok) {
-             std::printf("| %s | %s | failed: %s |||||||||\n", r.input.c_str(), r.method.c_str(),
-                         r.error.c_str());
+             std::printf("| %s | %s | failed: %s |||||||||||||\n", r.input.c_str(),
+                         r.method.c_str(), r.error.c_str());
              continue;
            }
            char spi[32] = "-";
            if (r.s_per_it > 0) std::snprintf(spi, sizeof spi, "%.3f", r.s_per_it);
+           char fe[128] = "- | - | - | -";
+           if (r.fe_measured)
+             std::snprintf(fe, sizeof fe, "%.3e | %.3e | %ld | %.2f", r.time_step,
+                           r.element_time_step, r.cg_iterations, r.fe_seconds);
            std::printf(
-               "| %s | %s | %ld | %ld | %.2f | %s | %.0f | %d | %.4f | %.4f | %.2f | %.2f |\n",
+               "| %s | %s | %ld | %ld | %.2f | %s | %.0f | %d | %.4f | %.4f | %.2f | %.2f | %s |\n",
                r.input.c_str(), r.method.c_str(), r.nb_tets_in, r.nb_tets_out, r.seconds, spi,
-               r.peak_mb, r.iterations, r.q_avg, r.q_min, r.min_dihedral, r.bad_pct);
+               r.peak_mb, r.iterations, r.q_avg, r.q_min, r.min_dihedral, r.bad_pct, fe);
          }
          // Accelerated vs plain Lloyd: iterations to reach the plain run's final energy.
          if (bo->plain) {

@@ -31,6 +31,7 @@ struct CompareOpts {
   std::string format = "text";
   std::string save_dir;
   bool baselines = true;
+  FeOptions fe;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -57,6 +58,7 @@ struct Comparison {
            double seconds, bool verify = true) {
     if (verify) verify_optimized(init.tet, d.tet);
     QualityStats s = quality_stats(d.tet, label);
+    add_fe_measures(s, d, co.fe);
     s.extra.push_back({"iterations", static_cast<double>(iterations)});
     s.extra.push_back({"seconds", seconds});
     table.columns.push_back(s);
@@ -104,6 +106,7 @@ void register_compare(CLI::App& app) {
   c->add_flag_callback(
       "--no-baselines", [co] { co->baselines = false; },
       "skip the peers: Gmsh's, TetGen's, Netgen's and CGAL's optimizers");
+  add_fe_options(c, co->fe);
   commands().push_back(
       {c, [in, opt, co] {
          if (!co->save_dir.empty()) {
@@ -119,6 +122,7 @@ void register_compare(CLI::App& app) {
          if (init.dim != 3) throw InputError("compare: needs a 3D tetrahedral mesh");
          Comparison cmp{*opt, *co, init, {}};
          QualityStats s0 = quality_stats(init.tet, "Init");
+         add_fe_measures(s0, init, co->fe);
          s0.extra.push_back({"seconds", mesh_seconds});
          cmp.table.columns.push_back(s0);
          cmp.histograms.push_back(

@@ -17,6 +17,7 @@ void register_stats(CLI::App& app) {
   auto labels = std::make_shared<std::vector<std::string>>();
   auto histogram = std::make_shared<std::string>();
   auto bins = std::make_shared<int>(20);
+  auto fe = std::make_shared<FeOptions>();
   CLI::App* c = app.add_subcommand(
       "stats", "print the quality table (the paper's Table 6/7 rows in 3D, Tables 1-5 in 2D)");
   add_input(c, *in);
@@ -30,8 +31,9 @@ void register_stats(CLI::App& app) {
                 "0.3, 0.5, 0.7 marked)");
   c->add_option("--bins", *bins, "number of histogram bins over [0, 1] (default 20)")
       ->check(CLI::Range(1, 1000));
+  add_fe_options(c, *fe);
   commands().push_back(
-      {c, [in, more, format, labels, histogram, bins] {
+      {c, [in, more, format, labels, histogram, bins, fe] {
          std::vector<std::string> paths = {in->path};
          paths.insert(paths.end(), more->begin(), more->end());
          if (!histogram->empty()) check_histogram_path(*histogram);
@@ -43,6 +45,7 @@ void register_stats(CLI::App& app) {
            const MeshData d = read_mesh(o.path, o.to_read_options());
            const std::string l = i < labels->size() ? (*labels)[i] : o.path;
            t.columns.push_back(d.dim == 3 ? quality_stats(d.tet, l) : quality_stats(d.tri, l));
+           add_fe_measures(t.columns.back(), d, *fe);
            if (!histogram->empty())
              hs.push_back(quality_histogram(d.dim == 3 ? element_qualities(d.tet, Measure::kQ)
                                                        : element_qualities(d.tri, Measure::kQ),

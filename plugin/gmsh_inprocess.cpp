@@ -114,6 +114,8 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
   GmshQualityResult out;
   out.stats =
       data.dim == 3 ? quality_stats(data.tet, "current") : quality_stats(data.tri, "current");
+  set_fe_measures(out.stats, data.dim == 3 ? fe_measures(data.tet, options.fe)
+                                           : fe_measures(data.tri, options.fe));
   if (options.quality_views) {
     remove_quality_views();
     out.views = add_element_views(quality_fields(data),
@@ -130,7 +132,12 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
   o.optimize = resolve(o.optimize, data.dim);
   // The model's CAD, where it has one, is the free boundary's reference geometry.
   if (!o.optimize.boundary_model) o.optimize.boundary_model = make_gmsh_cad_boundary_if_cad;
-  const OptimizeResult r = optimize(data, o.optimize);
+  const FeMeasures fe_before =
+      data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe);
+  OptimizeResult r = optimize(data, o.optimize);
+  set_fe_measures(r.before, fe_before);
+  set_fe_measures(r.after,
+                  data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe));
   return gmsh_write_back(data, r, o);
 }
 

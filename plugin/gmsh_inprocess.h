@@ -17,6 +17,7 @@
 
 #include "core/mesh/mesh_data.h"
 #include "core/pipeline/optimize.h"
+#include "core/quality/fe_measures.h"
 #include "core/quality/quality_table.h"
 
 namespace cvtmesh {
@@ -27,6 +28,9 @@ struct GmshOptimizeOptions {
   int dim = -1;                // 3: volumes, 2: planar surfaces, -1: highest dimension meshed
   bool generate = false;       // mesh the model first (gmsh generate(model dim)) if it has no mesh
   bool quality_views = false;  // add ElementData views (Q, radius ratio, min angle) on the result
+  // The FE measures of the statistics (core/quality/fe_measures.h): gmsh_quality's, and
+  // gmsh_optimize's before and after.
+  FeOptions fe;
 };
 
 struct GmshOptimizeResult {

@@ -5,6 +5,7 @@
 // the message console. Thin: parsing, the event loop and rendering; the work is in core/.
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <iostream>
@@ -272,10 +273,14 @@ class App {
     const GmshQualityResult q = gmsh_quality(o);
     if (!q.views.empty()) gui_show_view(q.views.front(), 0, 1, true);
     gui_refresh();
-    char buf[200];
+    char buf[300];
     std::snprintf(buf, sizeof buf,
                   "cvtmesh: current mesh: %ld elements, Q avg %.4f, Q min %.4f, bad %.2f%%",
                   q.stats.nb_elements, q.stats.q_avg, q.stats.q_min, q.stats.bad_pct);
+    if (q.stats.fe_measured)
+      std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf),
+                    ", time step %.3e (element bound %.3e), CG iterations %ld", q.stats.time_step,
+                    q.stats.element_time_step, q.stats.cg_iterations);
     tree_.info(buf);
     tree_.progress(buf);
     QualityTable t;

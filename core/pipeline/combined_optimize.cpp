@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/mesh/build_adjacency.h"
+#include "core/quality/time_step_guard.h"
 
 namespace cvtmesh {
 
@@ -22,10 +23,13 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
   smooth.passes = options.smoothing_passes;
   SwapOptions swap = options.swap;
   swap.compact = true;
+  MaxMinOptions maxmin = options.maxmin_options;
   for (int it = 1; it <= options.max_iterations; ++it) {
+    if (options.dt_guard_factor > 0)
+      smooth.dt_guard = maxmin.dt_guard = swap.dt_guard =
+          time_step_guard(mesh, options.dt_guard_factor);
     const SmoothStats ss = smooth_laplacian(mesh, smooth);
-    if (options.maxmin)
-      stats.nb_maxmin_moved += smooth_maxmin3(mesh, options.maxmin_options).nb_moved;
+    if (options.maxmin) stats.nb_maxmin_moved += smooth_maxmin3(mesh, maxmin).nb_moved;
     if (options.extra_smoothing) stats.nb_maxmin_moved += options.extra_smoothing(mesh);
     if (options.keep_min_q) {
       double q_min = std::numeric_limits<double>::infinity();

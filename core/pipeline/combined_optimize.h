@@ -30,6 +30,10 @@ struct CombinedOptions {
   // Raise the flips' guard floor (swap.guard_floor, with swap.use_guard) to the mesh's current
   // minimum Q before each iteration's flips, so that they never lower the global minimum Q.
   bool keep_min_q = false;
+  // The time-step guard (core/quality/time_step_guard.h) of the smoothing, max-min and flips:
+  // 0 = off; otherwise before each iteration its floor is this factor times the mesh's smallest
+  // element time step (+inf: no star's or ring's smallest step may fall at all).
+  double dt_guard_factor = 0;
   SwapOptions swap = [] {
     SwapOptions s;
     s.measure = Measure::kMinAngle;  // flips improving the minimal dihedral angles

@@ -65,6 +65,17 @@ struct OptimizeOptions {
   // The polish also moves the vertices of its poor tets (Q < 0.5 or a dihedral angle < 30
   // degrees) to maximise the minimum quality of their stars (core/smoothing/smooth_maxmin3.h).
   bool polish_maxmin = true;
+  // The polish's main criterion (issue 16): "quality" (Q and the dihedral angles, the default) or
+  // "dt", the element explicit time step (core/quality/element_time_step.h): the Laplacian passes
+  // refuse moves that lower a star's smallest step, the flips maximise the ring's smallest step
+  // (still never lowering Q below polish_q_floor), the max-min smoothing and the repair keep
+  // their Q objective under the strict time-step guard.
+  std::string objective = "quality";
+  // The polish's time-step guard (core/quality/time_step_guard.h): its moves, flips and repairs
+  // never lower the smallest element time step of a star / ring / local copy below min(its old
+  // value, polish_dt_floor x the mesh's smallest element step at the start of the iteration).
+  bool polish_dt_guard = true;
+  double polish_dt_floor = 1.05;
   // The polish ends with the repair of the slivers it left (Q < 0.2 or a dihedral angle < 15
   // degrees, most often locked by the boundary): a new interior vertex or a flip, each followed
   // by local max-min smoothing and flips, kept only where the local minimum rises

@@ -116,6 +116,29 @@ std::vector<OptionSpec> make_schema() {
                       "local smoothing, kept where the local minimum rises (the flag turns it "
                       "off)",
                       kDim3));
+  // The time step (issue 16; core/quality/time_step_guard.h).
+  {
+    OptionSpec s;
+    s.name = "objective";
+    s.flag = "--objective";
+    s.field = &O::objective;
+    s.dims = kDim3;
+    s.fronts = kCli | kPython;
+    s.choices = {"quality", "dt"};
+    s.help =
+        "the polish's main criterion: quality (Q and dihedral angles) or dt (the element "
+        "explicit time step: flips maximise it, moves never lower a star's)";
+    v.push_back(s);
+  }
+  v.push_back(boolean("polish_dt_guard", "--no-polish-dt-guard", &O::polish_dt_guard,
+                      "the polish's time-step guard: its moves, flips and repairs never lower a "
+                      "star's smallest element time step below min(its old value, polish_dt_floor "
+                      "x the mesh's smallest) (the flag turns it off)",
+                      kDim3));
+  v.push_back(number("polish_dt_floor", "--polish-dt-floor", &O::polish_dt_floor, 1, kInf,
+                     "the time-step guard protects the element time steps below this factor "
+                     "times the mesh's smallest (inf: every star's smallest step)",
+                     kDim3));
   // The free boundary (issue 13; core/boundary/), in the panel's group "Free boundary".
   auto panel = [&v](OptionSpec s, const char* label) {
     s.fronts = kAllFronts;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/geometry/tet_geometry.h"
+#include "core/quality/element_time_step.h"
 
 namespace cvtmesh {
 namespace {
@@ -76,8 +77,9 @@ Measure measure_from_string(const std::string& name) {
   if (name == "min-angle" || name == "min-dihedral") return Measure::kMinAngle;
   if (name == "max-angle" || name == "max-dihedral") return Measure::kMaxAngle;
   if (name == "icn") return Measure::kGmshIcn;
+  if (name == "time-step" || name == "dt") return Measure::kTimeStep;
   throw std::invalid_argument("unknown quality measure '" + name +
-                              "' (expected q, radius-ratio, min-angle, max-angle, icn)");
+                              "' (expected q, radius-ratio, min-angle, max-angle, icn, time-step)");
 }
 
 std::string measure_name(Measure m) {
@@ -92,6 +94,8 @@ std::string measure_name(Measure m) {
       return "max-angle";
     case Measure::kGmshIcn:
       return "icn";
+    case Measure::kTimeStep:
+      return "time-step";
   }
   return "?";
 }
@@ -139,6 +143,8 @@ double tet_quality(const double* a, const double* b, const double* c, const doub
     }
     case Measure::kGmshIcn:
       return tet_icn(a, b, c, d);
+    case Measure::kTimeStep:
+      return tet_time_step(a, b, c, d);
   }
   return 0;
 }
@@ -169,6 +175,21 @@ double tri_quality(const double* a, const double* b, const double* c, int dim, M
     case Measure::kMaxAngle: {
       const auto ang = tri_angles(a, b, c, dim);
       return *std::max_element(ang.begin(), ang.end()) * kDeg;
+    }
+    case Measure::kTimeStep: {
+      if (dim == 2) return tri_time_step(a, b, c);
+      // A triangle in space: its time step in its own plane (a 2D frame of the triangle).
+      const double ab = std::sqrt(dist2n(a, b, 3));
+      if (ab == 0) return 0;
+      double u[3], w[3];
+      for (int k = 0; k < 3; ++k) {
+        u[k] = (b[k] - a[k]) / ab;
+        w[k] = c[k] - a[k];
+      }
+      const double wu = w[0] * u[0] + w[1] * u[1] + w[2] * u[2];
+      const double h2 = dist2n(a, c, 3) - wu * wu;
+      const double p0[2] = {0, 0}, p1[2] = {ab, 0}, p2[2] = {wu, std::sqrt(std::max(0.0, h2))};
+      return tri_time_step(p0, p1, p2);
     }
   }
   return 0;

@@ -12,9 +12,13 @@ enum class Measure {
   kMinAngle,     // tet: minimum dihedral angle; tri: minimum angle. Degrees.
   kMaxAngle,     // tet: maximum dihedral angle; tri: maximum angle. Degrees.
   kGmshIcn,      // Gmsh's inverse condition number (Plugin(AnalyseMeshQuality) ICNMeasure)
+  // The element's explicit time step, P1 with lumped mass, wave speed 1 (element_time_step.h).
+  // Larger is better; not scale-invariant (it scales with the element's size).
+  kTimeStep,
 };
 
-// Parses "q", "radius-ratio", "min-angle", "max-angle", "icn"; throws std::invalid_argument.
+// Parses "q", "radius-ratio", "min-angle", "max-angle", "icn", "time-step"; throws
+// std::invalid_argument.
 Measure measure_from_string(const std::string& name);
 std::string measure_name(Measure m);
 

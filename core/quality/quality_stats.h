@@ -23,6 +23,13 @@ struct QualityStats {
   double min_angle = 0;  // degrees: dihedral (3D) or planar (2D)
   double max_angle = 0;
   double avg_radius_ratio = 0;
+  // FE measures (core/quality/fe_measures.h), filled by the front ends that ask for them
+  // (set_fe_measures); fe_measured false: not computed (the table shows "-", JSON null).
+  bool fe_measured = false;
+  double time_step = 0;            // global explicit time step, P1, lumped mass
+  double element_time_step = 0;    // min over the elements of the element bound (<= time_step)
+  long cg_iterations = 0;          // Jacobi-CG iterations, Poisson, boundary Dirichlet, 1e-8
+  double stiffness_condition = 0;  // estimate of cond(D^-1 K) from the CG run
   // Extra rows (e.g. {"iterations", 42}, {"seconds", 1.3}), shown in insertion order.
   std::vector<std::pair<std::string, double>> extra;
 };

@@ -61,6 +61,24 @@ std::vector<Row> rows_for(const std::vector<QualityStats>& cols) {
     rows.push_back(
         {"maximum angle", [](const QualityStats& s) { return fmt("%.2f", s.max_angle); }});
   }
+  // The FE measures (fe_measures.h), when a column has them.
+  bool any_fe = false;
+  for (const auto& c : cols) any_fe |= c.fe_measured;
+  if (any_fe) {
+    auto fe = [](double (*f)(const QualityStats&), const char* format) {
+      return [f, format](const QualityStats& s) {
+        return s.fe_measured ? fmt(format, f(s)) : std::string("-");
+      };
+    };
+    rows.push_back({"time step", fe([](const QualityStats& s) { return s.time_step; }, "%.3e")});
+    rows.push_back({"element time step",
+                    fe([](const QualityStats& s) { return s.element_time_step; }, "%.3e")});
+    rows.push_back({"CG iterations", [](const QualityStats& s) {
+                      return s.fe_measured ? count(s.cg_iterations) : std::string("-");
+                    }});
+    rows.push_back({"stiffness condition",
+                    fe([](const QualityStats& s) { return s.stiffness_condition; }, "%.1f")});
+  }
   // Extra rows: the union of the columns' extra names, in first-seen order.
   std::vector<std::string> extra;
   for (const auto& c : cols)
@@ -145,6 +163,13 @@ std::string QualityTable::to_json() const {
     c[s.dim == 3 ? "min_dihedral_angle" : "minimum_angle"] = s.min_angle;
     c[s.dim == 3 ? "max_dihedral_angle" : "maximum_angle"] = s.max_angle;
     c["average_radius_ratio"] = s.avg_radius_ratio;
+    // null when not measured (fe_measures.h: off, or above the automatic size limit).
+    auto fe = [&](double v) { return s.fe_measured ? nlohmann::ordered_json(v) : nullptr; };
+    c["time_step"] = fe(s.time_step);
+    c["element_time_step"] = fe(s.element_time_step);
+    c["cg_iterations"] =
+        s.fe_measured ? nlohmann::ordered_json(s.cg_iterations) : nlohmann::ordered_json(nullptr);
+    c["stiffness_condition"] = fe(s.stiffness_condition);
     for (const auto& [k, v] : s.extra) c[k] = v;
     j.push_back(c);
   }

@@ -1,6 +1,7 @@
 #include "core/smoothing/smooth_laplacian.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -63,14 +64,28 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   }
   const int nb_colours = static_cast<int>(colour_offset.size()) - 1;
   long nb_moved = 0, nb_half = 0, nb_rejected = 0;
+  // The nodal sums of the time-step guard, updated after each colour from its accepted moves
+  // (in vertex order: the same sums whatever the thread count).
+  const bool guard = options.dt_guard.on;
+  VertexTimeSteps steps;
+  if (guard) steps = vertex_time_steps(mesh);
+  std::vector<VertexStepChange> changes;
+  std::vector<char> changed;
+  std::vector<std::array<double, 3>> origin;  // of the accepted moves
   for (int pass = 0; pass < options.passes; ++pass) {
     ++stats.passes;
     for (int c = 0; c < nb_colours; ++c) {
+      if (guard) {
+        changes.resize(static_cast<std::size_t>(colour_offset[c + 1] - colour_offset[c]));
+        changed.assign(changes.size(), 0);
+        origin.resize(changes.size());
+      }
       // Small colours (coarse meshes) run on one thread: a fork/join per colour would cost more.
 #pragma omp parallel reduction(+ : nb_moved, nb_half, nb_rejected) if (colour_offset[c + 1] - colour_offset[c] > 2048)
       {
         std::vector<int> nbrs;
         std::vector<double> new_q;
+        VertexStepChange before, after;
 #pragma omp for schedule(static, 256)
         for (int i = colour_offset[c]; i < colour_offset[c + 1]; ++i) {
           const int v = by_colour[i];
@@ -93,6 +108,12 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
 
           double* P = mesh.point(v);
           const double orig[3] = {P[0], P[1], P[2]};
+          const double old_dt = guard ? min_time_step(mesh, star.begin_of(v), star.end_of(v)) : 0;
+          if (guard) {
+            before.clear();
+            for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+              before.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(*t)], -1);
+          }
           bool moved = false;
           for (int attempt = 0; attempt < (options.half_step ? 2 : 1) && !moved; ++attempt) {
             const double s = attempt == 0 ? 1.0 : 0.5;
@@ -110,6 +131,22 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
               new_q.push_back(quality_of(mesh, *t, options.measure));
               new_min = std::min(new_min, new_q.back());
             }
+            if (ok && new_min >= old_min && guard) {
+              ok = time_step_allows(options.dt_guard, old_dt,
+                                    min_time_step(mesh, star.begin_of(v), star.end_of(v)));
+              if (ok) {
+                after = before;
+                for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+                  after.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(*t)], +1);
+                ok = after.allows(options.dt_guard, steps);
+                if (ok) {
+                  changes[i - colour_offset[c]] = after;
+                  changed[i - colour_offset[c]] = 1;
+                  origin[i - colour_offset[c]] = {orig[0], orig[1], orig[2]};
+                  changed[i - colour_offset[c]] = attempt == 0 ? 1 : 2;
+                }
+              }
+            }
             if (ok && new_min >= old_min) {
               moved = true;
               std::size_t j = 0;
@@ -123,6 +160,24 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
           }
         }
       }
+      if (guard)
+        // Each move was judged on the sums before the colour; two moves of a colour may change
+        // the sums of a common neighbour. Re-judged here one by one, in vertex order, on the
+        // sums with the earlier ones applied: a move that now fails is undone (its star's tets
+        // are not changed by the colour's other moves, so its Q guard still holds).
+        for (std::size_t j = 0; j < changes.size(); ++j) {
+          if (!changed[j]) continue;
+          if (changes[j].allows(options.dt_guard, steps)) {
+            changes[j].apply(steps);
+            continue;
+          }
+          const int v = by_colour[colour_offset[c] + static_cast<int>(j)];
+          for (int k = 0; k < 3; ++k) mesh.point(v)[k] = origin[j][k];
+          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+            q[*t] = quality_of(mesh, *t, options.measure);
+          ++nb_rejected;
+          --(changed[j] == 1 ? nb_moved : nb_half);
+        }
     }
   }
   stats.nb_moved = nb_moved;

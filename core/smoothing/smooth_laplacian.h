@@ -5,6 +5,7 @@
 #pragma once
 #include "core/mesh/tet_mesh.h"
 #include "core/quality/quality.h"
+#include "core/quality/time_step_guard.h"
 
 namespace cvtmesh {
 
@@ -17,6 +18,9 @@ struct SmoothOptions {
   // kGmshIcn. kMaxAngle throws std::invalid_argument.
   Measure measure = Measure::kQ;
   bool half_step = true;  // try P + (P_new - P)/2 when the full step is rejected
+  // The time-step guard (time_step_guard.h; off by default): a move is also refused when the
+  // star's smallest element time step falls below min(its value before the move, floor).
+  TimeStepGuard dt_guard;
 };
 
 struct SmoothStats {

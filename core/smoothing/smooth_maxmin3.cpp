@@ -108,6 +108,10 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
   const double scale = o.angle_scale > 0 ? o.angle_scale : 60;  // of the angles' functions
   std::vector<Vec3> active;
   std::vector<double> sq, sa, lowest;
+  // The nodal sums of the time-step guard, updated after each accepted vertex.
+  VertexTimeSteps dt_steps;
+  if (o.dt_guard.on) dt_steps = vertex_time_steps(mesh);
+  VertexStepChange dt_before, dt_after;
   for (int pass = 0; pass < o.passes; ++pass) {
     ++stats.passes;
     poor.clear();
@@ -149,6 +153,17 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
           lowest[2 * i] = sq[i] >= q_floor ? q_floor : star_q;
           lowest[2 * i + 1] = sa[i] >= angle_floor ? angle_floor : star_a;
         }
+        const double star_dt = o.dt_guard.on ? min_time_step(mesh, b, e) : 0;
+        if (o.dt_guard.on) {
+          dt_before.clear();
+          for (const int* s = b; s != e; ++s) dt_before.add(mesh, tet_of(mesh, *s), -1);
+        }
+        // The nodal guard of the current position (the star's tets at P).
+        auto nodal_ok = [&] {
+          dt_after = dt_before;
+          for (const int* s = b; s != e; ++s) dt_after.add(mesh, tet_of(mesh, *s), +1);
+          return dt_after.allows(o.dt_guard, dt_steps);
+        };
         bool moved = false;
         for (int step = 0; step < o.max_steps; ++step) {
           // Values and gradients of every function of the star.
@@ -208,7 +223,10 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
             for (int c = 0; c < 3; ++c) P[c] = here[c] + alpha * d[c];
             const StarValues next =
                 star_values(mesh, b, e, o.angle_scale, sq.data(), sa.data(), lowest.data());
-            if (next.valid && next.objective > cur.objective) {
+            if (next.valid && next.objective > cur.objective &&
+                (!o.dt_guard.on ||
+                 (time_step_allows(o.dt_guard, star_dt, min_time_step(mesh, b, e)) &&
+                  nodal_ok()))) {
               accepted = true;
               cur = next;
             } else {
@@ -223,6 +241,10 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
           moved = true;
         }
         if (moved && cur.objective < start_objective + o.min_gain) moved = false;
+        if (moved && o.dt_guard.on) {
+          nodal_ok();  // the change at the final position
+          dt_after.apply(dt_steps);
+        }
         if (moved) {
           ++stats.nb_moved;
           ++moved_this_pass;

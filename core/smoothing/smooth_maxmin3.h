@@ -13,6 +13,7 @@
 // result depends on the input only.
 #pragma once
 #include "core/mesh/tet_mesh.h"
+#include "core/quality/time_step_guard.h"
 
 namespace cvtmesh {
 
@@ -35,6 +36,9 @@ struct MaxMinOptions {
   int passes = 3;      // sweeps over the vertices of the poor tets, worst tet first
   int max_steps = 30;  // ascent steps per vertex and pass
   int max_halvings = 12;
+  // The time-step guard (time_step_guard.h; off by default): a move is also refused when the
+  // star's smallest element time step falls below min(its value before the move, floor).
+  TimeStepGuard dt_guard;
 };
 
 struct MaxMinStats {

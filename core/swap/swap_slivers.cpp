@@ -126,6 +126,17 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   auto touch = [&](int t, int pass) {
     for (int k = 0; k < 4; ++k) touched[mesh.tets[4 * static_cast<std::size_t>(t) + k]] = pass;
   };
+  // The nodal sums of the time-step guard, updated at each committed swap.
+  VertexTimeSteps dt_steps;
+  if (options.dt_guard.on) dt_steps = vertex_time_steps(mesh);
+  VertexStepChange dt_change;
+  auto nodal_change = [&](const SwapPlan& plan) -> const VertexStepChange& {
+    dt_change.clear();
+    for (int o : plan.old_tets)
+      dt_change.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(o)], -1);
+    for (const auto& t : plan.new_tets) dt_change.add(mesh, t.data(), +1);
+    return dt_change;
+  };
   for (int pass = 0; pass < options.max_passes; ++pass) {
     order.clear();
     for (int t = 0; t < mesh.nb_tets(); ++t) {
@@ -163,6 +174,13 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
           const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
           if (guard_new < std::min(guard_old, options.guard_floor)) return false;
         }
+        if (options.dt_guard.on &&
+            !time_step_allows(options.dt_guard,
+                              min_quality(mesh, plan.old_tets, Measure::kTimeStep),
+                              min_quality(mesh, plan.new_tets, Measure::kTimeStep)))
+          return false;
+        if (options.dt_guard.on && !nodal_change(plan).allows(options.dt_guard, dt_steps))
+          return false;
         if (!have_best || plan.new_min > best.new_min) {
           best = std::move(plan);
           have_best = true;
@@ -200,6 +218,7 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
         ++version[o];
         touch(o, pass + 1);
       }
+      if (options.dt_guard.on) nodal_change(best).apply(dt_steps);
       apply_swap(mesh, best, &free_slots);
       if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
         q.resize(static_cast<std::size_t>(mesh.nb_tets()));

@@ -9,6 +9,7 @@
 
 #include "core/mesh/tet_mesh.h"
 #include "core/quality/quality.h"
+#include "core/quality/time_step_guard.h"
 
 namespace cvtmesh {
 
@@ -33,6 +34,9 @@ struct SwapOptions {
   // The guard only protects values below this floor: the new minimum must be at least
   // min(old minimum, guard_floor) (-inf: must not decrease at all).
   double guard_floor = -std::numeric_limits<double>::infinity();
+  // The time-step guard (time_step_guard.h; off by default): a swap is also refused when the
+  // new tets' smallest element time step is below min(the old tets', floor).
+  TimeStepGuard dt_guard;
 };
 
 struct SwapStats {
