@@ -223,9 +223,11 @@ void register_bench(CLI::App& app) {
   c->add_option("--cache", bo->cache,
                 "directory where each input's Init is meshed once and kept (binary .msh; "
                 "default ~/.cache/cvtmesh/bench); every row but Gmsh's meshing reads it, untimed");
-  c->add_flag("!--no-gmsh-meshing", bo->gmsh_meshing,
-              "skip the rows that time Gmsh's meshing (with and without its optimizer)");
-  c->add_flag("!--no-peers", bo->peers, "skip the TetGen, Netgen and CGAL rows");
+  c->add_flag_callback(
+      "--no-gmsh-meshing", [bo] { bo->gmsh_meshing = false; },
+      "skip the rows that time Gmsh's meshing (with and without its optimizer)");
+  c->add_flag_callback(
+      "--no-peers", [bo] { bo->peers = false; }, "skip the TetGen, Netgen and CGAL rows");
   add_schema_options(c, *opt, {"method"});  // the schema's options (not --method)
   add_fe_options(c, bench_fe());
   commands().push_back(
@@ -260,7 +262,7 @@ void register_bench(CLI::App& app) {
            // The Init, meshed once (in a child: Gmsh's state stays out of this process) and cached.
            const std::string init_path = cache_path(cache_dir, in.path, in.numbers);
            if (!std::filesystem::exists(init_path)) {
-             std::cerr << "cvtmesh: bench: meshing " << in.name << " into " << init_path << "\n";
+             info() << "cvtmesh: bench: meshing " << in.name << " into " << init_path << "\n";
              const Row made = run_isolated(in.name, "cache", [&](Row& r) {
                MeshData d = read_mesh(in.path, init_ro);
                WriteOptions w;

@@ -53,8 +53,9 @@ void register_stats(CLI::App& app) {
          }
          // One mesh: its object alone; several: the compare schema (docs/cli.md, JSON).
          if (*format == "json")
-           std::cout << (t.columns.size() == 1 ? mesh_json(t.columns.front()) : table_json(t)).dump(2)
-                     << "\n";
+           std::cout
+               << (t.columns.size() == 1 ? mesh_json(t.columns.front()) : table_json(t)).dump(2)
+               << "\n";
          else
            std::cout << render(t, *format);
          if (!histogram->empty()) {

@@ -17,7 +17,7 @@ nlohmann::json stats_json(const std::string& args) {
                          "' --set h=0.2 --set h_ball=0.15 --format json " + args + " 2>/dev/null",
                      &out);
   EXPECT_EQ(rc, 0) << out;
-  return nlohmann::json::parse(out)[0];
+  return nlohmann::json::parse(out);  // one mesh: one object (docs/cli.md, JSON)
 }
 
 TEST(FeMeasuresCli, StatsHasTheKeysAndTheWaveSpeedScalesTheSteps) {
