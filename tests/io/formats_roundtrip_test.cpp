@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -359,6 +360,84 @@ TEST(SurfaceIo, PlanarSurfaceReadsAs2D) {
   ASSERT_EQ(back.dim, 2);
   expect_valid(back);
   EXPECT_EQ(back.tri.nb_tris(), plate().tri.nb_tris());
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// A tetrahedron's surface 1e5 from the origin, with coordinates single precision cannot hold
+// (float spacing there is 0.0078): each surface format that can store doubles must give them back
+// exactly (ASCII .off/.obj/.stl, ASCII and binary little-endian .ply).
+TEST(SurfaceIo, CoordinatesAreReadInDoublePrecisionInEveryTextFormatAndBinaryPly) {
+  const double o = 1e5;
+  const std::vector<std::array<double, 3>> p = {{o + 0.0011, o + 0.0023, o + 0.0031},
+                                                {o + 1.0013, o + 0.0027, o + 0.0039},
+                                                {o + 0.0017, o + 1.0029, o + 0.0041},
+                                                {o + 0.0019, o + 0.0037, o + 1.0043}};
+  const std::vector<std::array<int, 3>> f = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  const std::string dir = testing::temp_dir();
+  auto num = [](double x) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", x);
+    return std::string(b);
+  };
+  std::map<std::string, std::string> files;
+  {
+    std::ostringstream s;
+    s << "solid t\n";
+    for (const auto& t : f) {
+      s << "facet normal 0 0 0\nouter loop\n";
+      for (int k : t)
+        s << "vertex " << num(p[k][0]) << " " << num(p[k][1]) << " " << num(p[k][2]) << "\n";
+      s << "endloop\nendfacet\n";
+    }
+    s << "endsolid t\n";
+    files["t.stl"] = s.str();
+  }
+  for (const bool binary : {false, true}) {
+    std::ostringstream s;
+    s << "ply\nformat " << (binary ? "binary_little_endian" : "ascii")
+      << " 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+         "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto& q : p) {
+      if (binary)
+        s.write(reinterpret_cast<const char*>(q.data()), 3 * sizeof(double));
+      else
+        s << num(q[0]) << " " << num(q[1]) << " " << num(q[2]) << "\n";
+    }
+    for (const auto& t : f) {
+      if (binary) {
+        const unsigned char n = 3;
+        s.write(reinterpret_cast<const char*>(&n), 1);
+        s.write(reinterpret_cast<const char*>(t.data()), 3 * sizeof(int));
+      } else {
+        s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+      }
+    }
+    files[binary ? "tb.ply" : "t.ply"] = s.str();
+  }
+  {
+    std::ostringstream s;
+    s << "OFF\n4 4 0\n";
+    for (const auto& q : p) s << num(q[0]) << " " << num(q[1]) << " " << num(q[2]) << "\n";
+    for (const auto& t : f) s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    files["t.off"] = s.str();
+  }
+  for (const auto& [name, text] : files) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path, std::ios::binary) << text;
+    const SurfaceMesh s = read_surface(path, true);
+    ASSERT_EQ(s.xyz.size(), 12u) << name;
+    for (int v = 0; v < 4; ++v) {
+      bool found = false;
+      for (const auto& q : p)
+        found |= s.xyz[3 * v] == q[0] && s.xyz[3 * v + 1] == q[1] && s.xyz[3 * v + 2] == q[2];
+      EXPECT_TRUE(found) << name << " vertex " << v << ": " << num(s.xyz[3 * v]);
+    }
+  }
 }
 
 }  // namespace

@@ -4,7 +4,10 @@
 // and the never-worse guarantee.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/geometry/round_coordinates.h"
@@ -224,6 +227,16 @@ TEST(RobustInputs, OutputCoordinatesAreThoseA16DigitWriterStores) {
   EXPECT_NE(0.1 + 0.2, 0.3);
 }
 
+// Every (dim, node, master node) of the $Periodic links, sorted.
+std::vector<std::array<std::size_t, 3>> periodic_pairs(const MeshData& d) {
+  std::vector<std::array<std::size_t, 3>> p;
+  for (const auto& l : d.tet.model.periodic)
+    for (std::size_t i = 0; i < l.node_tags.size(); ++i)
+      p.push_back({static_cast<std::size_t>(l.dim), l.node_tags[i], l.master_node_tags[i]});
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
 TEST(RobustInputs, PeriodicPairIsKeptWithItsNodesFixed) {
   MeshData d = read_mesh(write_geo("periodic", std::string(kBox) +
                                                    "Periodic Surface{2} = {1} Translate{1,0,0};\n"
@@ -234,17 +247,47 @@ TEST(RobustInputs, PeriodicPairIsKeptWithItsNodesFixed) {
   ASSERT_GT(pairs, 10u);
   const OptimizeResult r = optimize(d, quick());
   expect_valid_and_no_worse(d, r);
-  for (const bool binary : {false, true}) {
-    const char* version = binary ? "binary 4.1" : "4.1";
-    WriteOptions w;
-    w.binary = binary;
-    const std::string out = testing::temp_dir() + "/periodic.msh";
-    write_mesh(d, out, w);
-    const MeshData back = read_mesh(out);
-    std::size_t pairs_back = 0;
-    for (const auto& l : back.tet.model.periodic) pairs_back += l.node_tags.size();
-    EXPECT_EQ(pairs_back, pairs) << version;
-    EXPECT_TRUE(check_mesh(back.tet).ok) << version;
+  for (const double msh : {4.1, 2.2})
+    for (const bool binary : {false, true}) {
+      const std::string version = (binary ? "binary " : "") + std::to_string(msh);
+      WriteOptions w;
+      w.binary = binary;
+      w.msh_version = msh;
+      const std::string out = testing::temp_dir() + "/periodic.msh";
+      write_mesh(d, out, w);
+      const MeshData back = read_mesh(out);
+      std::size_t pairs_back = 0;
+      for (const auto& l : back.tet.model.periodic) pairs_back += l.node_tags.size();
+      EXPECT_EQ(pairs_back, pairs) << version;
+      EXPECT_TRUE(check_mesh(back.tet).ok) << version;
+      // The same node pairs as the input's.
+      EXPECT_EQ(periodic_pairs(back), periodic_pairs(d)) << version;
+    }
+}
+
+TEST(RobustInputs, MalformedMsh22PeriodicSectionIsRefusedNamingTheLine) {
+  MeshData d = read_mesh(write_geo("periodic22", std::string(kBox) +
+                                                     "Periodic Surface{2} = {1} Translate{1,0,0};\n"
+                                                     "Mesh.MeshSizeMax = 0.5;\n"));
+  WriteOptions w;
+  w.msh_version = 2.2;
+  const std::string out = testing::temp_dir() + "/periodic22.msh";
+  write_mesh(d, out, w);
+  // Cut the file inside its $Periodic section.
+  std::string text;
+  {
+    std::ifstream f(out, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(f), {});
+  }
+  const auto at = text.find("$Periodic");
+  ASSERT_NE(at, std::string::npos);
+  std::ofstream(out, std::ios::binary)
+      << text.substr(0, at) << "$Periodic\n1\n2 2 1\n3\n1 2\n$EndPeriodic\n";
+  try {
+    read_mesh(out);
+    ADD_FAILURE() << "read a cut $Periodic section";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("$Periodic"), std::string::npos) << e.what();
   }
 }
 
