@@ -357,14 +357,16 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
 // The notes on a per-region restore that made a candidate not worse than the input, or did not.
 std::string restore_succeeded(const std::string& what, const RestoreNote& rn, OptimizeResult& r) {
   r.nb_restored = rn.stats.nb_restored;
-  return "'" + what + "' left " + std::to_string(rn.stats.nb_short_before) +
-         " elements worse than the input's worst (" + rn.worse +
-         "): " + std::to_string(rn.stats.nb_restored) +
-         " vertices around them were restored to their input positions" +
-         (rn.stats.nb_smoothed ? " and " + std::to_string(rn.stats.nb_smoothed) +
-                                     " moved locally (part of the way back, towards their star's "
-                                     "centre, or by a compass search) until no element is worse"
-                               : "");
+  std::string s = "'" + what + "' left " + std::to_string(rn.stats.nb_short_before) +
+                  " elements worse than the input's worst (" + rn.worse + "): around them ";
+  if (rn.stats.nb_restored)
+    s += std::to_string(rn.stats.nb_restored) + " vertices were restored to their input positions";
+  if (rn.stats.nb_restored && rn.stats.nb_smoothed) s += " and ";
+  if (rn.stats.nb_smoothed)
+    s += std::to_string(rn.stats.nb_smoothed) +
+         " vertices moved locally (part of the way back, towards their star's centre, or by a "
+         "compass search)";
+  return s + "; the rest of the result is kept";
 }
 
 std::string restore_failed(const RestoreNote& rn) {
