@@ -19,6 +19,7 @@
 #include "core/io/vtk_io.h"
 #include "core/io/write_mesh.h"
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/optimize.h"
 #include "tests/io/gmsh_dump.h"
 #include "tests/support/test_meshes.h"
 
@@ -438,6 +439,69 @@ TEST(SurfaceIo, CoordinatesAreReadInDoublePrecisionInEveryTextFormatAndBinaryPly
       EXPECT_TRUE(found) << name << " vertex " << v << ": " << num(s.xyz[3 * v]);
     }
   }
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// A Medit .mesh's 3D Edges (MMG's ridges) are kept: read as line blocks, written back by the
+// Medit writer with their references, through optimize too, and as lines in a .msh.
+TEST(MeditIo, EdgesOfATetMeshAreKeptWithTheirRefs) {
+  const TetMesh c = testing::cube6();
+  std::set<std::array<int, 3>> edges;  // (a, b, ref) with a < b, 1-based
+  for (int a = 0; a < 8; ++a)
+    for (int axis = 0; axis < 3; ++axis)
+      if (!(a >> axis & 1)) edges.insert({a + 1, (a | 1 << axis) + 1, 10 + axis});
+  ASSERT_EQ(edges.size(), 12u);
+  std::ostringstream s;
+  s << "MeshVersionFormatted 2\nDimension 3\nVertices\n8\n";
+  for (int v = 0; v < 8; ++v)
+    s << c.point(v)[0] << " " << c.point(v)[1] << " " << c.point(v)[2] << " 0\n";
+  s << "Edges\n12\n";
+  for (const auto& e : edges) s << e[0] << " " << e[1] << " " << e[2] << "\n";
+  s << "Triangles\n" << c.nb_tris() << "\n";
+  for (int t = 0; t < c.nb_tris(); ++t)
+    s << c.tris[3 * t] + 1 << " " << c.tris[3 * t + 1] + 1 << " " << c.tris[3 * t + 2] + 1
+      << " 1\n";
+  s << "Tetrahedra\n6\n";
+  for (int t = 0; t < 6; ++t)
+    s << c.tets[4 * t] + 1 << " " << c.tets[4 * t + 1] + 1 << " " << c.tets[4 * t + 2] + 1 << " "
+      << c.tets[4 * t + 3] + 1 << " 1\n";
+  s << "End\n";
+  const std::string dir = testing::temp_dir();
+  std::ofstream(dir + "/edges.mesh") << s.str();
+  // The edges of a mesh as (a, b, ref), 1-based, a < b, by coordinates back to the input's ids.
+  auto edges_of = [&](const MeshData& d) {
+    std::set<std::array<int, 3>> out;
+    auto id = [&](int v) {
+      const double* p = d.tet.point(v);
+      return static_cast<int>(p[0] + 2 * p[1] + 4 * p[2]) + 1;
+    };
+    for (const ElementBlock& b : d.tet.model.extra)
+      for (std::size_t e = 0; e < b.medit_refs.size(); ++e) {
+        const int a = id(b.nodes[2 * e]), bb = id(b.nodes[2 * e + 1]);
+        out.insert({std::min(a, bb), std::max(a, bb), b.medit_refs[e]});
+      }
+    return out;
+  };
+  MeshData d = read_mesh(dir + "/edges.mesh");
+  EXPECT_EQ(edges_of(d), edges);
+  OptimizeOptions o;
+  o.max_iterations = 3;
+  optimize(d, o);
+  write_mesh(d, dir + "/edges_out.mesh");
+  const MeshData back = read_mesh(dir + "/edges_out.mesh");
+  expect_valid(back);
+  EXPECT_EQ(edges_of(back), edges);
+  // As lines in a .msh.
+  write_mesh(d, dir + "/edges_out.msh");
+  const testing::GmshDump g = gmsh_dump(dir + "/edges_out.msh");
+  long lines = 0;
+  for (const auto& [tag, e] : g.elements) lines += std::get<0>(e) == 1;
+  EXPECT_GE(lines, 12);
 }
 
 }  // namespace

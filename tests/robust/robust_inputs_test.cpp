@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
+#include <sstream>
 #include <iterator>
 #include <string>
 
@@ -366,6 +368,63 @@ TEST(PinVertices, LinesOnTheBoundaryStayFreeCellsArePinned) {
   unpin_vertices(m);
   EXPECT_EQ(m.vclass[0].dim, 1);
   EXPECT_EQ(m.vclass[0].entity, 7);
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// A hexahedron and tets sharing its quadrangle face x = 1 directly (no pyramid, no triangle
+// element on it): the tets' two faces there are constrained like a prism's triangle, the hex is
+// kept with its vertices fixed, and the interior vertex of the tets is optimized.
+TEST(RobustInputs, TetsOnAHexahedronsQuadFaceWithoutTrianglesAreHandled) {
+  const std::vector<std::array<double, 3>> p = {
+      {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1},        {1, 1, 1},
+      {0, 1, 1}, {2, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 1, 1}, {1.45, 0.55, 0.5}};
+  // The cube [1,2]x[0,1]x[0,1] (1-based node ids), each face split in two, coned to node 13.
+  const int faces[6][4] = {{2, 3, 7, 6},   {9, 11, 12, 10}, {2, 6, 11, 9},
+                           {3, 10, 12, 7}, {2, 9, 10, 3},   {6, 7, 12, 11}};
+  std::ostringstream s;
+  s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << p.size() << "\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    s << i + 1 << " " << p[i][0] << " " << p[i][1] << " " << p[i][2] << "\n";
+  s << "$EndNodes\n$Elements\n13\n1 5 2 0 1 1 2 3 4 5 6 7 8\n";
+  int id = 2;
+  for (const auto& f : faces) {
+    s << id++ << " 4 2 0 2 " << f[0] << " " << f[1] << " " << f[2] << " 13\n";
+    s << id++ << " 4 2 0 2 " << f[0] << " " << f[2] << " " << f[3] << " 13\n";
+  }
+  s << "$EndElements\n";
+  const std::string path = testing::temp_dir() + "/hex_tets.msh";
+  std::ofstream(path) << s.str();
+  MeshData d = read_mesh(path);
+  ASSERT_EQ(d.tet.nb_tets(), 12);
+  long hexes = 0;
+  for (const ElementBlock& b : d.tet.model.extra) hexes += b.gmsh_type == 5 ? b.tags.size() : 0;
+  ASSERT_EQ(hexes, 1);
+  const MeshData input = d;
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  // The hex's vertices did not move, and the tets still cover its face x = 1 exactly.
+  for (int v = 0; v < input.tet.nb_vertices(); ++v)
+    if (input.tet.point(v)[0] <= 1)
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(d.tet.point(v)[k], input.tet.point(v)[k]);
+  double area = 0;
+  for (int t = 0; t < d.tet.nb_tets(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      const double* a = d.tet.point(d.tet.tets[4 * t + kTetFace[f][0]]);
+      const double* b = d.tet.point(d.tet.tets[4 * t + kTetFace[f][1]]);
+      const double* c = d.tet.point(d.tet.tets[4 * t + kTetFace[f][2]]);
+      if (a[0] == 1 && b[0] == 1 && c[0] == 1)
+        area += 0.5 * std::abs((b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]));
+    }
+  EXPECT_DOUBLE_EQ(area, 1.0);
+  long hexes_after = 0;
+  for (const ElementBlock& b : d.tet.model.extra)
+    hexes_after += b.gmsh_type == 5 ? b.tags.size() : 0;
+  EXPECT_EQ(hexes_after, 1);
 }
 
 }  // namespace
