@@ -3,8 +3,10 @@
 # into a temporary directory: some are gzipped, some read data files beside them) and the models
 # in ../shared/data/models/ (referenced in place). For each model and method: `optimize` (with a
 # timeout), then `check` and `stats --format json` on the output. Prints one line per run:
-#   model method exit signal in_Qmin out_Qmin in_avg out_avg in_mindih out_mindih seconds check
-# (out_* read back from the written file; in_* from optimize's own table). No exit status of its
+#   model method exit signal in_Qmin g_Qmin out_Qmin in_avg g_avg out_avg in_mindih g_mindih
+#   out_mindih g_seconds seconds check
+# (out_* read back from the written file; in_* from stats on the input; g_* = Gmsh's own tet
+# optimizer on the same input mesh, `cvtmesh mesh IN --gmsh-optimize`; NO_GMSH=1 skips it). No exit status of its
 # own beyond the script's failures: it is a survey. The CTest label `corpus` asserts on it.
 #
 # Usage: scripts/corpus.sh [-m METHOD]... [-t SECONDS] [MODEL...]
@@ -58,8 +60,8 @@ try:
 except Exception as e:
   print("- - -")' "$1"
 }
-printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %7s %7s %8s %s\n" model method exit sig \
-  in_Qmin out_Qmin in_avg out_avg in_dih out_dih seconds "check / message"
+printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %8s %8s %7s %7s %7s %8s %8s %s\n" model method exit sig \
+  in_Qmin g_Qmin out_Qmin in_avg g_avg out_avg in_dih g_dih out_dih g_sec seconds "check / message"
 for m in "${all[@]}"; do
   in=$(input_of "$m")
   [ -z "$in" ] && { echo "$m: no input" >&2; continue; }
@@ -83,6 +85,16 @@ for m in "${all[@]}"; do
         >"$work/$m.in.json" 2>/dev/null)
     fi
     read -r iq ia id <<<"$(stats_of "$work/$m.in.json")"
+    # Gmsh's own optimizer on the same input mesh (cvtmesh mesh --gmsh-optimize), once a model.
+    if [ -z "${NO_GMSH:-}" ] && [ ! -f "$work/$m.g.json" ]; then
+      (cd "$work/tut" && timeout "$timeout_s" "$CVTMESH" mesh "$in" --gmsh-optimize \
+        -o "$work/$m.g.msh" >/dev/null 2>"$work/$m.g.err") &&
+        "$CVTMESH" stats "$work/$m.g.msh" --format json >"$work/$m.g.json" 2>/dev/null
+      [ -f "$work/$m.g.json" ] || echo '{}' >"$work/$m.g.json"
+    fi
+    read -r gq ga gd <<<"$(stats_of "$work/$m.g.json" 2>/dev/null || echo "- - -")"
+    gs=$(sed -n 's/.*Gmsh optimize: \([0-9.]*\) s.*/\1/p' "$work/$m.g.err" 2>/dev/null | head -1)
+    gs=${gs:--}
     oq=- oa=- od=- chk=-
     if [ $rc -eq 0 ] && [ -f "$out" ]; then
       if "$CVTMESH" check "$out" >"$work/$tag.chk" 2>&1; then chk=ok; else chk="check-rc$?"; fi
@@ -98,6 +110,9 @@ if "local operations only" in t: out.append("defects: local ops only")
 m=re.search(r"made the mesh worse \(([^)]*)\)", t)
 if m: out.append("method worse ("+m.group(1)+")")
 if "failed (" in t: out.append("method failed")
+m=re.search(r"(\d+) vertices were restored", t)
+if m and "left" in t: out.append("per-region restore ("+m.group(1)+" restored)")
+if "moved locally" in t: out.append("local moves")
 if "polish alone" in t: out.append("polish kept")
 if "smoothing alone" in t: out.append("smoothing alone kept")
 if "input is kept unchanged" in t: out.append("input kept")
@@ -107,8 +122,8 @@ print("; ".join(out))' "$work/$tag.err")
     else
       chk=$(grep -v '^\s*$' "$work/$tag.err" | tail -1 | cut -c1-150)
     fi
-    printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %7s %7s %8s %s\n" "$m" "$meth" "$rc" "$sig" \
-      "$iq" "$oq" "$ia" "$oa" "$id" "$od" "$secs" "$chk"
+    printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %8s %8s %7s %7s %7s %8s %8s %s\n" "$m" "$meth" "$rc" \
+      "$sig" "$iq" "$gq" "$oq" "$ia" "$ga" "$oa" "$id" "$gd" "$od" "$gs" "$secs" "$chk"
   done
 done
 [ -z "${KEEP:-}" ] && rm -rf "$work"

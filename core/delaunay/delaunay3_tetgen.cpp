@@ -13,7 +13,7 @@
 
 #include "core/delaunay/component_seeds.h"
 #include "core/delaunay/delaunay3.h"
-#include "core/delaunay/tetgen_error.h"
+#include "core/delaunay/tetrahedralize_isolated.h"
 #include "core/geometry/tetgen_library.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
@@ -45,7 +45,7 @@ class TetgenDelaunay3 final : public Delaunay3 {
       }
     const int np = static_cast<int>(ids.size());
 
-    tetgenio in, out;
+    tetgenio in;
     in.firstnumber = 0;
     in.numberofpoints = np;
     in.pointlist = new REAL[3 * static_cast<std::size_t>(np)];
@@ -83,21 +83,20 @@ class TetgenDelaunay3 final : public Delaunay3 {
     // optimizes a PLC's mesh by default (-O2: flips for quality), which leaves faces that are not
     // locally Delaunay (~190 on a 5x5x5 lattice, 2 in 3k tets on cube_sphere): the CVT needs the
     // constrained Delaunay tetrahedralization itself (tests/delaunay/delaunay3_degenerate_test).
-    char switches[] = "pYAzQMO0";
-    try {
-      tetgen_library().tetrahedralize(switches, &in, &out, nullptr, nullptr);
-    } catch (int code) {
-      throw InvariantError("TetGen failed to recover the boundary: " + tetgen_error(code));
-    }
-    if (out.numberofpoints < np)
-      throw InvariantError("TetGen lost input points (" + std::to_string(np - out.numberofpoints) +
-                           ")");
+    // In a child process (tetrahedralize_isolated): a crash inside TetGen becomes an
+    // InvariantError, and optimize() goes on with local operations only.
+    const IsolatedTetgenOutput out = tetrahedralize_isolated(
+        "pYAzQMO0", in, "the Delaunay rebuild of the CVT (retetrahedralize)");
+    const int nb_out_points = static_cast<int>(out.points.size() / 3);
+    const int nb_out_tets = static_cast<int>(out.tets.size() / 4);
+    if (nb_out_points < np)
+      throw InvariantError("TetGen lost input points (" + std::to_string(np - nb_out_points) + ")");
 
     // Steiner points (interior only, thanks to -Y) are appended as free vertices.
-    stats.nb_steiner = out.numberofpoints - np;
-    for (int p = np; p < out.numberofpoints; ++p) {
+    stats.nb_steiner = nb_out_points - np;
+    for (int p = np; p < nb_out_points; ++p) {
       ids.push_back(m.nb_vertices());
-      m.xyz.insert(m.xyz.end(), out.pointlist + 3 * p, out.pointlist + 3 * p + 3);
+      m.xyz.insert(m.xyz.end(), out.points.begin() + 3 * p, out.points.begin() + 3 * p + 3);
       m.vclass.push_back(VertexClass{3, 0});
       if (!m.node_tags.empty()) m.node_tags.push_back(0);
     }
@@ -108,14 +107,14 @@ class TetgenDelaunay3 final : public Delaunay3 {
     m.tets.clear();
     m.tet_region.clear();
     m.tet_tags.clear();
-    for (int t = 0; t < out.numberoftetrahedra; ++t) {
-      const int region = static_cast<int>(out.tetrahedronattributelist[t]);
+    for (int t = 0; t < nb_out_tets; ++t) {
+      const int region = static_cast<int>(out.attributes[t]);
       if (!regions.count(region)) {
         ++stats.nb_dropped_tets;
         continue;
       }
       int v[4];
-      for (int k = 0; k < 4; ++k) v[k] = ids[out.tetrahedronlist[4 * t + k]];
+      for (int k = 0; k < 4; ++k) v[k] = ids[out.tets[4 * t + k]];
       if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0)
         std::swap(v[2], v[3]);
       m.tets.insert(m.tets.end(), v, v + 4);

@@ -9,9 +9,9 @@ namespace cvtmesh {
 
 void append_msh_periodic(const std::string& path, const std::vector<PeriodicLink>& links,
                          double msh_version, bool binary) {
-  // MSH 2.2: Gmsh 4.8 did not read back a section appended after $Elements (its own writer puts
-  // it before $Nodes); not written there (documented loss).
-  if (links.empty() || msh_version < 3) return;
+  // MSH 2.2 as Gmsh 4.8 writes it: after $Elements, in text even in a binary file (read back by
+  // read_msh2_periodic: Gmsh's API does not give it).
+  if (links.empty()) return;
   std::ofstream f(path, std::ios::binary | std::ios::app);
   if (!f) throw OutputError("cannot write '" + path + "': cannot append the $Periodic section");
   auto text = [&](const std::string& s) {

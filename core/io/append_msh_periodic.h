@@ -1,7 +1,7 @@
 // Gmsh 4.8's API can declare periodic entities but not their node correspondences, so the
 // $Periodic section of a written .msh is appended by us: after Gmsh's $Elements, in the file's
-// mode (ASCII or binary 4.1), from ModelInfo::periodic (node tags). Not in MSH 2.2 (Gmsh did not
-// read it back there).
+// mode (ASCII or binary 4.1; in MSH 2.2 in text, as Gmsh writes it), from ModelInfo::periodic
+// (node tags).
 #pragma once
 #include <string>
 #include <vector>

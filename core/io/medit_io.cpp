@@ -39,6 +39,16 @@ void write_medit(const MeshData& data, const std::string& path) {
     for (int t = 0; t < m.nb_tris(); ++t)
       std::fprintf(f, "%d %d %d %d\n", m.tris[3 * t] + 1, m.tris[3 * t + 1] + 1,
                    m.tris[3 * t + 2] + 1, m.tri_surface[t]);
+    // The Edges the input .mesh had (blocks with Medit references), as they were.
+    long nb_edges = 0;
+    for (const ElementBlock& b : m.model.extra) nb_edges += static_cast<long>(b.medit_refs.size());
+    if (nb_edges) {
+      std::fprintf(f, "\nEdges\n%ld\n", nb_edges);
+      for (const ElementBlock& b : m.model.extra)
+        for (std::size_t e = 0; e < b.medit_refs.size(); ++e)
+          std::fprintf(f, "%d %d %d\n", b.nodes[2 * e] + 1, b.nodes[2 * e + 1] + 1,
+                       b.medit_refs[e]);
+    }
     long live = 0;
     for (int t = 0; t < m.nb_tets(); ++t) live += m.tets[4 * t] >= 0;
     std::fprintf(f, "\nTetrahedra\n%ld\n", live);
@@ -159,7 +169,14 @@ MeshData read_medit(const std::string& path) {
   // Element indices given before the vertices are checked by finish_mesh.
   MeshData data;
   const std::string name = std::filesystem::path(path).stem().string();
+  std::vector<int> edges3, edge_ref3;  // 3D Edges: kept as line blocks after finish_mesh
   if (dim == 3 && !tets.empty()) {
+    for (int v : edges)
+      if (v >= nv)
+        throw InputError(what + ": an edge refers to vertex " + std::to_string(v + 1) +
+                         ", which does not exist (" + std::to_string(nv) + " vertices)");
+    edges3 = std::move(edges);
+    edge_ref3 = std::move(edge_ref);
     data.dim = 3;
     data.tet.xyz = std::move(xyz);
     data.tet.tets = std::move(tets);
@@ -190,7 +207,44 @@ MeshData read_medit(const std::string& path) {
     m.edge_curve = std::move(edge_ref);
     m.model.name = name;
   }
+  // The vertex ids finish_mesh gives: the vertices the tets use, in order.
+  std::vector<int> renumber(edges3.empty() ? 0 : nv, -1);
+  if (!edges3.empty()) {
+    for (int v : data.tet.tets) renumber[v] = 0;
+    int k = 0;
+    for (int& r : renumber)
+      if (r == 0) r = k++;
+  }
   finish_mesh(data, what);
+  if (!edges3.empty()) {
+    // One line block per reference, on a curve entity of its own, kept unchanged (its vertices
+    // are the tet mesh's: the boundary ones move only as the boundary does).
+    ModelInfo& info = data.tet.model;
+    int tag = 0;
+    for (const ModelEntity& e : info.entities)
+      if (e.dim == 1) tag = std::max(tag, e.tag);
+    std::map<int, ElementBlock> by_ref;
+    for (std::size_t e = 0; e < edge_ref3.size(); ++e) {
+      ElementBlock& b = by_ref[edge_ref3[e]];
+      for (int k = 0; k < 2; ++k) {
+        const int v = renumber[edges3[2 * e + k]];
+        if (v < 0)
+          throw InputError(what + ": edge " + std::to_string(e + 1) + " uses vertex " +
+                           std::to_string(edges3[2 * e + k] + 1) +
+                           ", which no tetrahedron uses (cannot keep it)");
+        b.nodes.push_back(v);
+      }
+      b.medit_refs.push_back(edge_ref3[e]);
+      b.tags.push_back(0);
+    }
+    for (auto& [ref, b] : by_ref) {
+      b.dim = 1;
+      b.entity = ++tag;
+      b.gmsh_type = 1;
+      info.entities.push_back({1, tag, {}});
+      info.extra.push_back(std::move(b));
+    }
+  }
   return data;
 }
 

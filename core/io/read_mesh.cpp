@@ -1,4 +1,6 @@
 #include "core/io/read_mesh.h"
+#include "core/io/read_msh2_periodic.h"
+#include "core/io/read_msh_format.h"
 
 #include <optional>
 
@@ -261,6 +263,9 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     throw;
   }
   data.model().source = path;
+  // Gmsh 4.8 does not give back the $Periodic section of an MSH 2.2 file.
+  if (ext == ".msh" && data.model().periodic.empty() && read_msh_format(path).version < 3)
+    data.model().periodic = read_msh2_periodic(path);
   data.model().origin = origin;
   data.model().file_blocks = std::move(file_blocks);
   // The placeholder group of our MSH 2.2 output (see write_mesh.h) is not a user's group.

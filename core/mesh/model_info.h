@@ -29,6 +29,9 @@ struct ElementBlock {
   int gmsh_type = 0;              // Gmsh element type (15 = point, 1 = line, 2 = tri, 4 = tet)
   std::vector<std::size_t> tags;  // Gmsh element tags, #E
   std::vector<int> nodes;         // #E * nodes-per-element, 0-based vertex ids
+  // #E references of a Medit .mesh's 3D Edges (written back by the Medit writer); empty for the
+  // other blocks.
+  std::vector<int> medit_refs;
 };
 
 // A periodic link of the mesh ($Periodic): entity (dim, tag) is the image of entity `master`

@@ -19,6 +19,7 @@
 #include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize2d.h"
 #include "core/pipeline/repair_slivers.h"
+#include "core/pipeline/restore_worse_regions.h"
 #include "core/swap/swap_slivers.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/geometry/round_coordinates.h"
@@ -297,11 +298,21 @@ bool rebuilds_tetrahedralization(const std::string& method) {
   return method.rfind("cvdt", 0) == 0;
 }
 
+// What the per-region restore did to one candidate (restore_worse_regions).
+struct RestoreNote {
+  std::string worse;  // what was worse than the input before it ("" = nothing: no restore ran)
+  RestoreStats stats;
+};
+
 // Runs `method` on a copy of `input` (pinned vertices fixed), rounds the free vertices to what
-// a text writer stores, restores the classes, verifies (on the coordinates as they will be read
-// back: every tet must stay positive once all of them are rounded). Returns the mesh, or throws.
+// a text writer stores, restores the classes; if `ref` is given and the result is worse than it,
+// moves the vertices around the elements short of it back to their input positions
+// (restore_worse_regions; `restored` says what happened); verifies (on the coordinates as they
+// will be read back: every tet must stay positive once all of them are rounded). Returns the
+// mesh, or throws.
 TetMesh run_method3(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
-                    OptimizeResult& r) {
+                    OptimizeResult& r, const QualityStats* ref = nullptr,
+                    RestoreNote* restored = nullptr) {
   TetMesh mesh = input;
   pin_vertices(mesh);
   // The default method moves the boundary (issue 13; core/boundary/) unless fix_boundary.
@@ -322,6 +333,17 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
         for (int k = 0; k < 3; ++k) free[v] |= mesh.point(v)[k] != input.point(v)[k];
     }
     round_coordinates(mesh.xyz, o.output_digits, free);
+  }
+  // Before the classes are restored: a pinned vertex (of a kept non-tet element, periodic) is
+  // not interior for restore_worse_regions, which moves it only back to where it is.
+  if (ref) {
+    const std::string worse = worse_than(quality_stats(mesh, ""), *ref);
+    if (!worse.empty()) {
+      RestoreOptions ro;
+      ro.digits = o.output_digits;
+      RestoreNote note{worse, restore_worse_regions(mesh, input, *ref, ro)};
+      if (restored) *restored = note;
+    }
   }
   unpin_vertices(mesh);
   if (const int bad = last_non_positive_tet(mesh); bad >= 0)
@@ -361,22 +383,52 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   return mesh;
 }
 
-// 2D: optimize_2d, and the input kept if the result is worse.
+// The notes on a per-region restore that made a candidate not worse than the input, or did not.
+std::string restore_succeeded(const std::string& what, const RestoreNote& rn, OptimizeResult& r) {
+  r.nb_restored = rn.stats.nb_restored;
+  std::string s = "'" + what + "' left " + std::to_string(rn.stats.nb_short_before) +
+                  " elements worse than the input's worst (" + rn.worse + "): around them ";
+  if (rn.stats.nb_restored)
+    s += std::to_string(rn.stats.nb_restored) + " vertices were restored to their input positions";
+  if (rn.stats.nb_restored && rn.stats.nb_smoothed) s += " and ";
+  if (rn.stats.nb_smoothed)
+    s += std::to_string(rn.stats.nb_smoothed) +
+         " vertices moved locally (part of the way back, towards their star's centre, or by a "
+         "compass search)";
+  return s + "; the rest of the result is kept";
+}
+
+std::string restore_failed(const RestoreNote& rn) {
+  if (rn.worse.empty()) return "";
+  return "; restoring " + std::to_string(rn.stats.nb_restored) + " vertices around the " +
+         std::to_string(rn.stats.nb_short_before) + " elements short of the input's worst left " +
+         std::to_string(rn.stats.nb_short_after);
+}
+
+// 2D: optimize_2d; where the result is worse than the input, the vertices around the elements
+// short of the input's worst go back to their input positions (restore_worse_regions), and the
+// input is kept if that is not enough.
 OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& options) {
   const TriMesh2 input = mesh;
   OptimizeResult r = optimize_2d(mesh, options);
-  if (options.never_worse) {
-    const std::string worse = worse_than(r.after, r.before);
-    if (!worse.empty()) {
-      r.notes.push_back("'" + r.method + "' made the mesh worse (" + worse +
-                        "): the input is kept unchanged");
-      mesh = input;
-      r.kept_input = true;
-      const std::string label = r.after.label;
-      r.after = r.before;
-      r.after.label = label;
-    }
+  if (!options.never_worse) return r;
+  const std::string worse = worse_than(r.after, r.before);
+  if (worse.empty()) return r;
+  const std::string label = r.after.label;
+  const RestoreNote rn{worse, restore_worse_regions(mesh, input, r.before)};
+  if (options.verify) verify_optimized(input, mesh);
+  r.after = quality_stats(mesh, label);
+  const std::string still = worse_than(r.after, r.before);
+  if (still.empty()) {
+    r.notes.push_back(restore_succeeded(r.method, rn, r));
+    return r;
   }
+  r.notes.push_back("'" + r.method + "' made the mesh worse (" + worse + restore_failed(rn) +
+                    "): the input is kept unchanged");
+  mesh = input;
+  r.kept_input = true;
+  r.after = r.before;
+  r.after.label = label;
   return r;
 }
 
@@ -435,11 +487,16 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     }
   }
   std::string failure;
+  const QualityStats* ref = o.never_worse ? &r.before : nullptr;
   try {
-    data.tet = run_method3(input, method, oo, r);
+    RestoreNote rn;
+    data.tet = run_method3(input, method, oo, r, ref, &rn);
     if (o.never_worse) {
       const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
-      if (!worse.empty()) failure = "'" + method + "' made the mesh worse (" + worse + ")";
+      if (!worse.empty())
+        failure = "'" + method + "' made the mesh worse (" + worse + ")" + restore_failed(rn);
+      else if (!rn.worse.empty())
+        r.notes.push_back(restore_succeeded(method, rn, r));
     }
   } catch (const InvariantError& e) {
     if (!o.never_worse) throw;
@@ -459,8 +516,14 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
       }
       try {
         OptimizeResult p;
-        TetMesh m = run_method3(input, "smooth", po, p);
+        RestoreNote rn;
+        TetMesh m = run_method3(input, "smooth", po, p, ref, &rn);
         const std::string worse = worse_than(quality_stats(m, ""), r.before);
+        const std::string what = gentle ? "the polish's smoothing" : "the polish";
+        if (worse.empty() && !rn.worse.empty()) r.notes.push_back(restore_succeeded(what, rn, r));
+        if (!worse.empty())
+          r.notes.push_back(what + " on the input is worse too (" + worse + restore_failed(rn) +
+                            ")");
         if (worse.empty()) {
           data.tet = std::move(m);
           polished = true;
@@ -471,7 +534,9 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
                                      "sliver repair) is kept instead"
                                    : "the polish alone ('smooth') on the input is kept instead");
         }
-      } catch (const InvariantError&) {
+      } catch (const InvariantError& e) {
+        r.notes.push_back(std::string(gentle ? "the polish's smoothing" : "the polish") +
+                          " on the input failed (" + e.what() + ")");
       }
     }
     if (!polished) {

@@ -108,9 +108,12 @@ struct OptimizeOptions {
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   // Never worse than the input: if the method's result has a lower Q_min or minimum angle
-  // (dihedral in 3D), a higher maximum angle, or fails to finish (a failure of the Delaunay
-  // rebuild), the polish alone (local, guarded operations: "smooth") is tried on the input, and
-  // if that is worse too the input is returned unchanged. OptimizeResult::notes says which.
+  // (dihedral in 3D) or a higher maximum angle, the vertices around the elements short of the
+  // input's worst go back to their input positions first (per region:
+  // core/pipeline/restore_worse_regions.h); if that is not enough, or the method fails to finish
+  // (a failure of the Delaunay rebuild), the polish alone (local, guarded operations: "smooth")
+  // is tried on the input, with the same per-region restore, and if that is worse too the input
+  // is returned unchanged (in 2D the input at once). OptimizeResult::notes says which.
   bool never_worse = true;
   // Coordinates are verified as a text writer stores them: the moved and new vertices are rounded
   // to this many significant digits, and every tet must stay positive with all coordinates
@@ -149,6 +152,9 @@ struct OptimizeResult {
   // unchanged, ... One sentence each, for the summary.
   std::vector<std::string> notes;
   bool kept_input = false;  // the input is returned unchanged (see notes)
+  // Vertices moved back to their input positions around elements the method left worse than
+  // the input's worst (the per-region never-worse: restore_worse_regions; see notes).
+  long nb_restored = 0;
 };
 
 // Optimizes data in place (every tet region in 3D, every surface in 2D; boundary and interfaces

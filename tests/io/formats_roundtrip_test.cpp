@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -18,6 +19,7 @@
 #include "core/io/vtk_io.h"
 #include "core/io/write_mesh.h"
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/optimize.h"
 #include "core/util/error.h"
 #include "tests/io/gmsh_dump.h"
 #include "tests/support/test_meshes.h"
@@ -365,6 +367,147 @@ TEST(SurfaceIo, PlanarSurfaceReadsAs2D) {
   ASSERT_EQ(back.dim, 2);
   expect_valid(back);
   EXPECT_EQ(back.tri.nb_tris(), plate().tri.nb_tris());
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// A tetrahedron's surface 1e5 from the origin, with coordinates single precision cannot hold
+// (float spacing there is 0.0078): each surface format that can store doubles must give them back
+// exactly (ASCII .off/.obj/.stl, ASCII and binary little-endian .ply).
+TEST(SurfaceIo, CoordinatesAreReadInDoublePrecisionInEveryTextFormatAndBinaryPly) {
+  const double o = 1e5;
+  const std::vector<std::array<double, 3>> p = {{o + 0.0011, o + 0.0023, o + 0.0031},
+                                                {o + 1.0013, o + 0.0027, o + 0.0039},
+                                                {o + 0.0017, o + 1.0029, o + 0.0041},
+                                                {o + 0.0019, o + 0.0037, o + 1.0043}};
+  const std::vector<std::array<int, 3>> f = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  const std::string dir = testing::temp_dir();
+  auto num = [](double x) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", x);
+    return std::string(b);
+  };
+  std::map<std::string, std::string> files;
+  {
+    std::ostringstream s;
+    s << "solid t\n";
+    for (const auto& t : f) {
+      s << "facet normal 0 0 0\nouter loop\n";
+      for (int k : t)
+        s << "vertex " << num(p[k][0]) << " " << num(p[k][1]) << " " << num(p[k][2]) << "\n";
+      s << "endloop\nendfacet\n";
+    }
+    s << "endsolid t\n";
+    files["t.stl"] = s.str();
+  }
+  for (const bool binary : {false, true}) {
+    std::ostringstream s;
+    s << "ply\nformat " << (binary ? "binary_little_endian" : "ascii")
+      << " 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+         "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto& q : p) {
+      if (binary)
+        s.write(reinterpret_cast<const char*>(q.data()), 3 * sizeof(double));
+      else
+        s << num(q[0]) << " " << num(q[1]) << " " << num(q[2]) << "\n";
+    }
+    for (const auto& t : f) {
+      if (binary) {
+        const unsigned char n = 3;
+        s.write(reinterpret_cast<const char*>(&n), 1);
+        s.write(reinterpret_cast<const char*>(t.data()), 3 * sizeof(int));
+      } else {
+        s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+      }
+    }
+    files[binary ? "tb.ply" : "t.ply"] = s.str();
+  }
+  {
+    std::ostringstream s;
+    s << "OFF\n4 4 0\n";
+    for (const auto& q : p) s << num(q[0]) << " " << num(q[1]) << " " << num(q[2]) << "\n";
+    for (const auto& t : f) s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    files["t.off"] = s.str();
+  }
+  for (const auto& [name, text] : files) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path, std::ios::binary) << text;
+    const SurfaceMesh s = read_surface(path, true);
+    ASSERT_EQ(s.xyz.size(), 12u) << name;
+    for (int v = 0; v < 4; ++v) {
+      bool found = false;
+      for (const auto& q : p)
+        found |= s.xyz[3 * v] == q[0] && s.xyz[3 * v + 1] == q[1] && s.xyz[3 * v + 2] == q[2];
+      EXPECT_TRUE(found) << name << " vertex " << v << ": " << num(s.xyz[3 * v]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// A Medit .mesh's 3D Edges (MMG's ridges) are kept: read as line blocks, written back by the
+// Medit writer with their references, through optimize too, and as lines in a .msh.
+TEST(MeditIo, EdgesOfATetMeshAreKeptWithTheirRefs) {
+  const TetMesh c = testing::cube6();
+  std::set<std::array<int, 3>> edges;  // (a, b, ref) with a < b, 1-based
+  for (int a = 0; a < 8; ++a)
+    for (int axis = 0; axis < 3; ++axis)
+      if (!(a >> axis & 1)) edges.insert({a + 1, (a | 1 << axis) + 1, 10 + axis});
+  ASSERT_EQ(edges.size(), 12u);
+  std::ostringstream s;
+  s << "MeshVersionFormatted 2\nDimension 3\nVertices\n8\n";
+  for (int v = 0; v < 8; ++v)
+    s << c.point(v)[0] << " " << c.point(v)[1] << " " << c.point(v)[2] << " 0\n";
+  s << "Edges\n12\n";
+  for (const auto& e : edges) s << e[0] << " " << e[1] << " " << e[2] << "\n";
+  s << "Triangles\n" << c.nb_tris() << "\n";
+  for (int t = 0; t < c.nb_tris(); ++t)
+    s << c.tris[3 * t] + 1 << " " << c.tris[3 * t + 1] + 1 << " " << c.tris[3 * t + 2] + 1
+      << " 1\n";
+  s << "Tetrahedra\n6\n";
+  for (int t = 0; t < 6; ++t)
+    s << c.tets[4 * t] + 1 << " " << c.tets[4 * t + 1] + 1 << " " << c.tets[4 * t + 2] + 1 << " "
+      << c.tets[4 * t + 3] + 1 << " 1\n";
+  s << "End\n";
+  const std::string dir = testing::temp_dir();
+  std::ofstream(dir + "/edges.mesh") << s.str();
+  // The edges of a mesh as (a, b, ref), 1-based, a < b, by coordinates back to the input's ids.
+  auto edges_of = [&](const MeshData& d) {
+    std::set<std::array<int, 3>> out;
+    auto id = [&](int v) {
+      const double* p = d.tet.point(v);
+      return static_cast<int>(p[0] + 2 * p[1] + 4 * p[2]) + 1;
+    };
+    for (const ElementBlock& b : d.tet.model.extra)
+      for (std::size_t e = 0; e < b.medit_refs.size(); ++e) {
+        const int a = id(b.nodes[2 * e]), bb = id(b.nodes[2 * e + 1]);
+        out.insert({std::min(a, bb), std::max(a, bb), b.medit_refs[e]});
+      }
+    return out;
+  };
+  MeshData d = read_mesh(dir + "/edges.mesh");
+  EXPECT_EQ(edges_of(d), edges);
+  OptimizeOptions o;
+  o.max_iterations = 3;
+  optimize(d, o);
+  write_mesh(d, dir + "/edges_out.mesh");
+  const MeshData back = read_mesh(dir + "/edges_out.mesh");
+  expect_valid(back);
+  EXPECT_EQ(edges_of(back), edges);
+  // As lines in a .msh.
+  write_mesh(d, dir + "/edges_out.msh");
+  const testing::GmshDump g = gmsh_dump(dir + "/edges_out.msh");
+  long lines = 0;
+  for (const auto& [tag, e] : g.elements) lines += std::get<0>(e) == 1;
+  EXPECT_GE(lines, 12);
 }
 
 }  // namespace

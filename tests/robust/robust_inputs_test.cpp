@@ -4,7 +4,12 @@
 // and the never-worse guarantee.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <fstream>
+#include <sstream>
+#include <iterator>
 #include <string>
 
 #include "core/geometry/round_coordinates.h"
@@ -224,6 +229,16 @@ TEST(RobustInputs, OutputCoordinatesAreThoseA16DigitWriterStores) {
   EXPECT_NE(0.1 + 0.2, 0.3);
 }
 
+// Every (dim, node, master node) of the $Periodic links, sorted.
+std::vector<std::array<std::size_t, 3>> periodic_pairs(const MeshData& d) {
+  std::vector<std::array<std::size_t, 3>> p;
+  for (const auto& l : d.tet.model.periodic)
+    for (std::size_t i = 0; i < l.node_tags.size(); ++i)
+      p.push_back({static_cast<std::size_t>(l.dim), l.node_tags[i], l.master_node_tags[i]});
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
 TEST(RobustInputs, PeriodicPairIsKeptWithItsNodesFixed) {
   MeshData d = read_mesh(write_geo("periodic", std::string(kBox) +
                                                    "Periodic Surface{2} = {1} Translate{1,0,0};\n"
@@ -234,17 +249,47 @@ TEST(RobustInputs, PeriodicPairIsKeptWithItsNodesFixed) {
   ASSERT_GT(pairs, 10u);
   const OptimizeResult r = optimize(d, quick());
   expect_valid_and_no_worse(d, r);
-  for (const bool binary : {false, true}) {
-    const char* version = binary ? "binary 4.1" : "4.1";
-    WriteOptions w;
-    w.binary = binary;
-    const std::string out = testing::temp_dir() + "/periodic.msh";
-    write_mesh(d, out, w);
-    const MeshData back = read_mesh(out);
-    std::size_t pairs_back = 0;
-    for (const auto& l : back.tet.model.periodic) pairs_back += l.node_tags.size();
-    EXPECT_EQ(pairs_back, pairs) << version;
-    EXPECT_TRUE(check_mesh(back.tet).ok) << version;
+  for (const double msh : {4.1, 2.2})
+    for (const bool binary : {false, true}) {
+      const std::string version = (binary ? "binary " : "") + std::to_string(msh);
+      WriteOptions w;
+      w.binary = binary;
+      w.msh_version = msh;
+      const std::string out = testing::temp_dir() + "/periodic.msh";
+      write_mesh(d, out, w);
+      const MeshData back = read_mesh(out);
+      std::size_t pairs_back = 0;
+      for (const auto& l : back.tet.model.periodic) pairs_back += l.node_tags.size();
+      EXPECT_EQ(pairs_back, pairs) << version;
+      EXPECT_TRUE(check_mesh(back.tet).ok) << version;
+      // The same node pairs as the input's.
+      EXPECT_EQ(periodic_pairs(back), periodic_pairs(d)) << version;
+    }
+}
+
+TEST(RobustInputs, MalformedMsh22PeriodicSectionIsRefusedNamingTheLine) {
+  MeshData d = read_mesh(write_geo("periodic22", std::string(kBox) +
+                                                     "Periodic Surface{2} = {1} Translate{1,0,0};\n"
+                                                     "Mesh.MeshSizeMax = 0.5;\n"));
+  WriteOptions w;
+  w.msh_version = 2.2;
+  const std::string out = testing::temp_dir() + "/periodic22.msh";
+  write_mesh(d, out, w);
+  // Cut the file inside its $Periodic section.
+  std::string text;
+  {
+    std::ifstream f(out, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(f), {});
+  }
+  const auto at = text.find("$Periodic");
+  ASSERT_NE(at, std::string::npos);
+  std::ofstream(out, std::ios::binary)
+      << text.substr(0, at) << "$Periodic\n1\n2 2 1\n3\n1 2\n$EndPeriodic\n";
+  try {
+    read_mesh(out);
+    ADD_FAILURE() << "read a cut $Periodic section";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("$Periodic"), std::string::npos) << e.what();
   }
 }
 
@@ -323,6 +368,63 @@ TEST(PinVertices, LinesOnTheBoundaryStayFreeCellsArePinned) {
   unpin_vertices(m);
   EXPECT_EQ(m.vclass[0].dim, 1);
   EXPECT_EQ(m.vclass[0].entity, 7);
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+// A hexahedron and tets sharing its quadrangle face x = 1 directly (no pyramid, no triangle
+// element on it): the tets' two faces there are constrained like a prism's triangle, the hex is
+// kept with its vertices fixed, and the interior vertex of the tets is optimized.
+TEST(RobustInputs, TetsOnAHexahedronsQuadFaceWithoutTrianglesAreHandled) {
+  const std::vector<std::array<double, 3>> p = {
+      {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1},        {1, 1, 1},
+      {0, 1, 1}, {2, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 1, 1}, {1.45, 0.55, 0.5}};
+  // The cube [1,2]x[0,1]x[0,1] (1-based node ids), each face split in two, coned to node 13.
+  const int faces[6][4] = {{2, 3, 7, 6},   {9, 11, 12, 10}, {2, 6, 11, 9},
+                           {3, 10, 12, 7}, {2, 9, 10, 3},   {6, 7, 12, 11}};
+  std::ostringstream s;
+  s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << p.size() << "\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    s << i + 1 << " " << p[i][0] << " " << p[i][1] << " " << p[i][2] << "\n";
+  s << "$EndNodes\n$Elements\n13\n1 5 2 0 1 1 2 3 4 5 6 7 8\n";
+  int id = 2;
+  for (const auto& f : faces) {
+    s << id++ << " 4 2 0 2 " << f[0] << " " << f[1] << " " << f[2] << " 13\n";
+    s << id++ << " 4 2 0 2 " << f[0] << " " << f[2] << " " << f[3] << " 13\n";
+  }
+  s << "$EndElements\n";
+  const std::string path = testing::temp_dir() + "/hex_tets.msh";
+  std::ofstream(path) << s.str();
+  MeshData d = read_mesh(path);
+  ASSERT_EQ(d.tet.nb_tets(), 12);
+  long hexes = 0;
+  for (const ElementBlock& b : d.tet.model.extra) hexes += b.gmsh_type == 5 ? b.tags.size() : 0;
+  ASSERT_EQ(hexes, 1);
+  const MeshData input = d;
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  // The hex's vertices did not move, and the tets still cover its face x = 1 exactly.
+  for (int v = 0; v < input.tet.nb_vertices(); ++v)
+    if (input.tet.point(v)[0] <= 1)
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(d.tet.point(v)[k], input.tet.point(v)[k]);
+  double area = 0;
+  for (int t = 0; t < d.tet.nb_tets(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      const double* a = d.tet.point(d.tet.tets[4 * t + kTetFace[f][0]]);
+      const double* b = d.tet.point(d.tet.tets[4 * t + kTetFace[f][1]]);
+      const double* c = d.tet.point(d.tet.tets[4 * t + kTetFace[f][2]]);
+      if (a[0] == 1 && b[0] == 1 && c[0] == 1)
+        area += 0.5 * std::abs((b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]));
+    }
+  EXPECT_DOUBLE_EQ(area, 1.0);
+  long hexes_after = 0;
+  for (const ElementBlock& b : d.tet.model.extra)
+    hexes_after += b.gmsh_type == 5 ? b.tags.size() : 0;
+  EXPECT_EQ(hexes_after, 1);
 }
 
 }  // namespace
