@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -290,58 +291,47 @@ void register_bench(CLI::App& app) {
                fill_quality(r, d.tet);
              }));
            }
-           if (bo->peers) {
-             rows.push_back(run_isolated(in.name, "TetGen -q -O on Init", [&](Row& r) {
+           // A row that times `op` on the cached Init (op returns its own time, or < 0 to be
+           // timed here) and reports its iteration count.
+           auto timed_row = [&](const std::string& label, int iterations,
+                                const std::function<double(TetMesh&)>& op) {
+             rows.push_back(run_isolated(in.name, label, [&](Row& r) {
                MeshData d = read_init();
                r.nb_tets_in = d.tet.nb_tets();
                const auto t0 = Clock::now();
-               tetgen_optimize(d.tet);
-               r.seconds = since(t0);
-               r.iterations = 9;
+               const double own = op(d.tet);
+               r.seconds = own >= 0 ? own : since(t0);
+               r.iterations = iterations;
                fill_quality(r, d.tet);
              }));
+           };
+           if (bo->peers) {
+             timed_row("TetGen -q -O on Init", 9, [](TetMesh& m) {
+               tetgen_optimize(m);
+               return -1.0;
+             });
              // The peers a user would pick instead (issue 17): Netgen's volume optimizer (its own
              // time, the transfer to its Python module not counted) and CGAL's remeshing.
-             rows.push_back(run_isolated(in.name, "Netgen optimize on Init", [&](Row& r) {
-               MeshData d = read_init();
-               r.nb_tets_in = d.tet.nb_tets();
-               const NetgenResult res = netgen_optimize(d.tet);
+             timed_row("Netgen optimize on Init", 1, [](TetMesh& m) {
+               const NetgenResult res = netgen_optimize(m);
                if (!res.available) throw std::runtime_error(res.message);
-               r.seconds = res.seconds;
-               r.iterations = 1;
-               fill_quality(r, d.tet);
-             }));
-             rows.push_back(run_isolated(in.name, "CGAL remeshing on Init", [&](Row& r) {
-               MeshData d = read_init();
-               r.nb_tets_in = d.tet.nb_tets();
-               const auto t0 = Clock::now();
-               cgal_remesh(d.tet);
-               r.seconds = since(t0);
-               r.iterations = CgalRemeshOptions{}.iterations;
-               fill_quality(r, d.tet);
-             }));
-             rows.push_back(
-                 run_isolated(in.name, "CGAL Mesh_3 from the Init's surface", [&](Row& r) {
-                   MeshData d = read_init();
-                   r.nb_tets_in = d.tet.nb_tets();
-                   const auto t0 = Clock::now();
-                   cgal_mesh3(d.tet);
-                   r.seconds = since(t0);
-                   r.iterations = 1;
-                   fill_quality(r, d.tet);
-                 }));
+               return res.seconds;
+             });
+             timed_row("CGAL remeshing on Init", CgalRemeshOptions{}.iterations, [](TetMesh& m) {
+               cgal_remesh(m);
+               return -1.0;
+             });
+             timed_row("CGAL Mesh_3 from the Init's surface", 1, [](TetMesh& m) {
+               cgal_mesh3(m);
+               return -1.0;
+             });
            }
            // One constrained Delaunay tetrahedralization of the Init's points by TetGen: what a
            // Lloyd iteration that rebuilt the mesh would pay for its re-insertion alone.
-           rows.push_back(run_isolated(in.name, "TetGen CDT of the Init's points", [&](Row& r) {
-             MeshData d = read_init();
-             r.nb_tets_in = d.tet.nb_tets();
-             const auto t0 = Clock::now();
-             Delaunay3::create("tetgen")->retetrahedralize(d.tet);
-             r.seconds = since(t0);
-             r.iterations = 1;
-             fill_quality(r, d.tet);
-           }));
+           timed_row("TetGen CDT of the Init's points", 1, [](TetMesh& m) {
+             Delaunay3::create("tetgen")->retetrahedralize(m);
+             return -1.0;
+           });
            auto run_method = [&](const std::string& label, const std::string& m, double omega,
                                  int anderson, int max_it = -1, double tol = -1, int lbfgs = -1) {
              rows.push_back(run_isolated(in.name, label, [&](Row& r) {
