@@ -53,17 +53,19 @@ std::string output_path(const std::string& input) {
 }
 
 // .geo-language text: a For loop over the views whose name is one of `names`, running `body`
-// (with cvt_v the view's index and cvt_i the name's index in `names`). One statement per line:
-// Gmsh runs a For loop by rewinding its input to the line after For.
+// once for each (cvt_v: the view's index; one condition, so a body that deletes the view is not
+// followed by a test on an index that moved). One statement per line: Gmsh runs a For loop by
+// rewinding its input to the line after For.
 std::string for_our_views(const std::vector<std::string>& names, const std::string& body,
                           bool backwards) {
+  std::string any;
+  for (const auto& n : names)
+    any += std::string(any.empty() ? "" : " || ") + "(StrCmp(Sprintf(View[cvt_v].Name), \"" + n +
+           "\") == 0)";
   std::string s = "If (PostProcessing.NbViews > 0)\n";
   s += backwards ? "For cvt_v In {PostProcessing.NbViews - 1 : 0 : -1}\n"
                  : "For cvt_v In {0 : PostProcessing.NbViews - 1}\n";
-  for (std::size_t i = 0; i < names.size(); ++i)
-    s += "If (StrCmp(Sprintf(View[cvt_v].Name), \"" + names[i] + "\") == 0)\ncvt_i = " +
-         std::to_string(i) + ";\n" + body + "EndIf\n";
-  return s + "EndFor\nEndIf\n";
+  return s + "If (" + any + ")\n" + body + "EndIf\nEndFor\nEndIf\n";
 }
 
 // Renames the views of the last run "<name> (stale)" (the options changed since).

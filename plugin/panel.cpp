@@ -200,7 +200,8 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
 
 std::string panel_signature(const GmshOptimizeOptions& o) {
   std::string s;
-  for (const OptionSpec& spec : option_schema()) s += spec.name + "=" + value_text(spec, o.optimize) + ";";
+  for (const OptionSpec& spec : option_schema())
+    s += spec.name + "=" + value_text(spec, o.optimize) + ";";
   return s + "quality_views=" + std::to_string(o.quality_views) + ";dim=" + std::to_string(o.dim);
 }
 

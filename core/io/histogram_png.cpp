@@ -73,9 +73,8 @@ void write_histogram_png(const std::vector<QualityHistogram>& series, const std:
     if (!o) throw OutputError("cannot write the temporary file '" + svg.path + "'");
   }
   AtomicFile f(path);
-  const ProgramRun r =
-      run_program({rsvg, "--format", "png", "--background-color", "white", "--output",
-                   f.temp_path(), svg.path});
+  const ProgramRun r = run_program({rsvg, "--format", "png", "--background-color", "white",
+                                    "--output", f.temp_path(), svg.path});
   if (r.exit_code != 0 || !starts_as_png(f.temp_path())) {
     std::string why = first_line(r.error_output);
     if (why.empty())

@@ -1,6 +1,7 @@
 // The quality histograms of one or several meshes overlaid, as an SVG picture (`cvtmesh stats
-// --histogram`, `compare --save`; as PNG through core/io/histogram_png.h): fraction of elements per Q bin, one outline per mesh, the
-// paper's bin edges (0.3, 0.5, 0.7) marked, a legend with each mesh's count, Q_min and average.
+// --histogram`, `compare --save`; as PNG through core/io/histogram_png.h): fraction of elements per
+// Q bin, one outline per mesh, the paper's bin edges (0.3, 0.5, 0.7) marked, a legend with each
+// mesh's count, Q_min and average.
 #pragma once
 #include <string>
 #include <vector>

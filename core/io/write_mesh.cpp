@@ -157,8 +157,8 @@ std::string quality_opt(const MeshData& data, const std::string& path,
         lo3[k] = std::min(lo3[k], data.tet.point(v)[k]);
         hi3[k] = std::max(hi3[k], data.tet.point(v)[k]);
       }
-    s += camera_cut_geo(
-        {0.5 * (lo3[0] + hi3[0]), 0.5 * (lo3[1] + hi3[1]), 0.5 * (lo3[2] + hi3[2])}, "0");
+    s += camera_cut_geo({0.5 * (lo3[0] + hi3[0]), 0.5 * (lo3[1] + hi3[1]), 0.5 * (lo3[2] + hi3[2])},
+                        "0");
   }
   return s;
 }

@@ -32,7 +32,8 @@ std::string slurp(const std::string& p) {
 }
 
 std::uint32_t be32(const std::string& s, std::size_t at) {
-  return (std::uint32_t(std::uint8_t(s[at])) << 24) | (std::uint32_t(std::uint8_t(s[at + 1])) << 16) |
+  return (std::uint32_t(std::uint8_t(s[at])) << 24) |
+         (std::uint32_t(std::uint8_t(s[at + 1])) << 16) |
          (std::uint32_t(std::uint8_t(s[at + 2])) << 8) | std::uint32_t(std::uint8_t(s[at + 3]));
 }
 
@@ -55,7 +56,8 @@ Png decode_png(const std::string& path) {
   }
   p.width = be32(s, 16);
   p.height = be32(s, 20);
-  const int depth = std::uint8_t(s[24]), colour = std::uint8_t(s[25]), interlace = std::uint8_t(s[28]);
+  const int depth = std::uint8_t(s[24]), colour = std::uint8_t(s[25]),
+            interlace = std::uint8_t(s[28]);
   EXPECT_EQ(depth, 8);
   EXPECT_TRUE(colour == 2 || colour == 6) << "colour type " << colour;
   EXPECT_EQ(interlace, 0);
@@ -74,7 +76,8 @@ Png decode_png(const std::string& path) {
   const std::size_t stride = std::size_t(p.width) * bpp;
   std::vector<unsigned char> raw((stride + 1) * p.height);
   uLongf n = raw.size();
-  if (uncompress(raw.data(), &n, reinterpret_cast<const Bytef*>(idat.data()), idat.size()) != Z_OK ||
+  if (uncompress(raw.data(), &n, reinterpret_cast<const Bytef*>(idat.data()), idat.size()) !=
+          Z_OK ||
       n != raw.size()) {
     ADD_FAILURE() << path << ": the image data does not inflate to " << raw.size() << " bytes";
     return p;
@@ -92,7 +95,8 @@ Png decode_png(const std::string& path) {
       if (f == 2) pred = b;
       if (f == 3) pred = (a + b) / 2;
       if (f == 4) {
-        const int pp = a + b - c, pa = std::abs(pp - a), pb = std::abs(pp - b), pc = std::abs(pp - c);
+        const int pp = a + b - c, pa = std::abs(pp - a), pb = std::abs(pp - b),
+                  pc = std::abs(pp - c);
         pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
       }
       out[i] = static_cast<unsigned char>(in[i] + pred);
@@ -186,9 +190,10 @@ TEST_F(HistogramPng, AMissingRasterizerIsRefusedBeforeAnyWork) {
 TEST_F(HistogramPng, AFailingRasterizerLeavesNoFile) {
   // A rasterizer that fails after writing half a file: /bin/sh script that writes junk and exits 1.
   const fs::path fake = dir_ / "fake-rsvg";
-  std::ofstream(fake) << "#!/bin/sh\n"
-                         "while [ $# -gt 0 ]; do [ \"$1\" = --output ] && echo junk > \"$2\"; shift; done\n"
-                         "echo 'fake-rsvg: broken' >&2\nexit 1\n";
+  std::ofstream(fake)
+      << "#!/bin/sh\n"
+         "while [ $# -gt 0 ]; do [ \"$1\" = --output ] && echo junk > \"$2\"; shift; done\n"
+         "echo 'fake-rsvg: broken' >&2\nexit 1\n";
   fs::permissions(fake, fs::perms::owner_all);
   setenv("CVTMESH_RSVG_CONVERT", fake.c_str(), 1);
   const std::string out = (dir_ / "h.png").string();
@@ -217,10 +222,10 @@ TEST_F(HistogramPng, StatsWritesAPngHistogram) {
   EXPECT_EQ(p.height, 440u);
   // Refused up front, with exit 3 (cannot write) and no file, when the rasterizer is missing.
   const std::string out2 = (dir_ / "stats2.png").string();
-  const int code = testing::run("CVTMESH_RSVG_CONVERT=/no/such " + testing::cli_path() +
-                                    " stats '" + testing::geo_path("quad.geo") + "' --histogram '" +
-                                    out2 + "'",
-                                &log);
+  const int code =
+      testing::run("CVTMESH_RSVG_CONVERT=/no/such " + testing::cli_path() + " stats '" +
+                       testing::geo_path("quad.geo") + "' --histogram '" + out2 + "'",
+                   &log);
   EXPECT_EQ(code, 3) << log;
   EXPECT_NE(log.find("librsvg2-bin"), std::string::npos) << log;
   EXPECT_FALSE(fs::exists(out2));

@@ -10,6 +10,7 @@
   the cut plane faces the camera (its normal is the view direction of General.RotationX/Y/Z).
 - Stop (the Run button while running) ends a long run; the mesh is left alone; it is reported as
   a notice (Info), not an error.
+- An input changed after a run (a click on a check box) renames the run's views "... (stale)".
 - A model that cannot be read: the error reaches the console and the result file, no crash.
 
 Environment: CVTMESH_GUI (the executable), CVTMESH_SOURCE_DIR, CVTMESH_ARTIFACTS (screenshots).
@@ -141,6 +142,23 @@ class Gui(unittest.TestCase):
         self.assertEqual(run["result"]["iterations"], 8)
         self.assertGreater(run["result"]["after"]["average_quality"],
                            run["result"]["before"]["average_quality"])
+
+    def test_views_are_marked_stale_when_an_option_changes(self):
+        self.start("--run-on-start", "--max-iterations", "4")
+        wid = xu.window("Gmsh")
+        run = self.result_of("optimize")
+        self.assertIn("result", run, run)
+        time.sleep(1.5)  # the watch compares once a second: nothing changed yet
+        self.assertEqual(xu.read_json(self.result)["action"], "optimize")
+        # A synthetic click on the panel's "Quality views" check box (left of the tree, below
+        # Sizing): an input changed after the run.
+        xu.click(wid, 51, 302)
+        stale = self.result_of("stale", timeout=30, keys=("changed",))
+        self.assertEqual(stale["changed"], "options")
+        names = [v["name"] for v in stale["display"]["views"]]
+        self.assertEqual(len(names), 4, names)  # Q, radius ratio, min angle, histogram
+        for n in names:
+            self.assertTrue(n.endswith(" (stale)"), names)
 
     def test_a_cad_ball_moves_its_boundary_on_the_cad(self):
         ball = os.path.join(self.tmp.name, "ball.geo")

@@ -47,7 +47,9 @@ TEST(CameraCut, FacesTheCameraForAnyViewAngles) {
   EXPECT_NEAR(n0[1], 0, 1e-15);
   EXPECT_NEAR(n0[2], 1, 1e-15);
   const auto p = camera_cut_plane(n0, {0.5, 0.5, 0.5});
-  auto kept = [&p](double x, double y, double z) { return p[0] * x + p[1] * y + p[2] * z + p[3] >= 0; };
+  auto kept = [&p](double x, double y, double z) {
+    return p[0] * x + p[1] * y + p[2] * z + p[3] >= 0;
+  };
   EXPECT_TRUE(kept(0.5, 0.5, 0.2));
   EXPECT_FALSE(kept(0.5, 0.5, 0.8));
   // For any angles: a unit vector, and the eye-space z axis of Rx Ry Rz mapped back (rotating the
@@ -107,7 +109,7 @@ TEST_F(GuiViews, HistogramIsAGraphOfTheHistogram) {
   const auto after = quality_histogram({0.8, 0.85, 0.9, 0.95}, 10, "after");
   const int tag = gui_add_histogram_view({before, after}, kHistogramViewName);
   EXPECT_EQ(view_name(tag), kHistogramViewName);
-  EXPECT_EQ(view_number(tag, "Type"), 2);  // a 2D graph
+  EXPECT_EQ(view_number(tag, "Type"), 2);        // a 2D graph
   EXPECT_EQ(view_number(tag, "NbTimeStep"), 2);  // one curve per series
   std::vector<std::string> types;
   std::vector<int> counts;
