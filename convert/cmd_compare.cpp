@@ -14,6 +14,7 @@
 #include "bench/baselines/cgal_mesh3.h"
 #include "bench/baselines/cgal_remesh.h"
 #include "bench/baselines/netgen_optimize.h"
+#include "core/io/histogram_png.h"
 #include "core/io/histogram_svg.h"
 #include "core/quality/quality_fields.h"
 #include "core/quality/quality_histogram.h"
@@ -102,7 +103,8 @@ void register_compare(CLI::App& app) {
       ->check(CLI::IsMember({"text", "markdown", "json"}));
   c->add_option("--save", co->save_dir,
                 "also write every mesh (with quality views) and the columns' quality histograms "
-                "(histogram.svg) into this directory");
+                "(histogram.svg, and histogram.png when rsvg-convert is installed) into this "
+                "directory");
   c->add_flag_callback(
       "--no-baselines", [co] { co->baselines = false; },
       "skip the peers: Gmsh's, TetGen's, Netgen's and CGAL's optimizers");
@@ -193,6 +195,11 @@ void register_compare(CLI::App& app) {
            OutputPolicy p;
            p.force = true;
            write_histogram_svg(cmp.histograms, co->save_dir + "/histogram.svg", p);
+           // The same picture as PNG when Debian's rsvg-convert is there (it is optional here).
+           if (!histogram_png_rasterizer().empty())
+             write_histogram_png(cmp.histograms, co->save_dir + "/histogram.png", p);
+           else
+             info() << "cvtmesh: histogram.png left out: rsvg-convert (librsvg2-bin) not found\n";
          }
          std::cout << render(cmp.table, co->format);
          return 0;

@@ -2,11 +2,14 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
+#include "core/io/camera_cut.h"
 #include "core/io/geo_scan.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/process_guard.h"
@@ -210,29 +213,48 @@ void gui_refresh() {
   gmsh::graphics::draw();
 }
 
+namespace {
+
+std::string view_option(int tag, const std::string& name) {
+  return "View[" + std::to_string(gmsh::view::getIndex(tag)) + "]." + name;
+}
+
+}  // namespace
+
 void gui_show_view(int tag, double vmin, double vmax, bool cut) {
   cut = cut && gmsh::model::getDimension() == 3;  // a planar mesh is seen whole
   std::vector<int> tags;
   gmsh::view::getTags(tags);
   for (int t : tags) {
-    const std::string v = "View[" + std::to_string(gmsh::view::getIndex(t)) + "].";
-    gmsh::option::setNumber(v + "Visible", t == tag ? 1 : 0);
-    if (t != tag) continue;
-    if (vmax > vmin) {
-      gmsh::option::setNumber(v + "RangeType", 2);  // custom
-      gmsh::option::setNumber(v + "CustomMin", vmin);
-      gmsh::option::setNumber(v + "CustomMax", vmax);
-    }
-    gmsh::option::setNumber(v + "Clip", cut ? 1 : 0);
+    double type = 1;
+    gmsh::option::getNumber(view_option(t, "Type"), type);
+    if (t != tag && type == 1) gmsh::option::setNumber(view_option(t, "Visible"), 0);
   }
+  const std::string v = "View[" + std::to_string(gmsh::view::getIndex(tag)) + "].";
+  gmsh::option::setNumber(v + "Visible", 1);
+  if (vmax <= vmin) {  // the range of the values
+    gmsh::option::getNumber(v + "Min", vmin);
+    gmsh::option::getNumber(v + "Max", vmax);
+  }
+  if (vmax > vmin) {
+    gmsh::option::setNumber(v + "RangeType", 2);  // custom: unchanged by the cut
+    gmsh::option::setNumber(v + "CustomMin", vmin);
+    gmsh::option::setNumber(v + "CustomMax", vmax);
+  }
+  gmsh::option::setNumber(v + "Clip", cut ? 1 : 0);
   if (cut) {
     double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
     gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-    // Keep x <= centre: -x + centre >= 0.
-    gmsh::option::setNumber("General.Clip0A", -1);
-    gmsh::option::setNumber("General.Clip0B", 0);
-    gmsh::option::setNumber("General.Clip0C", 0);
-    gmsh::option::setNumber("General.Clip0D", 0.5 * (x0 + x1));
+    double r[3] = {0, 0, 0};
+    gmsh::option::getNumber("General.RotationX", r[0]);
+    gmsh::option::getNumber("General.RotationY", r[1]);
+    gmsh::option::getNumber("General.RotationZ", r[2]);
+    const auto plane = camera_cut_plane(camera_direction(r[0], r[1], r[2]),
+                                        {0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)});
+    gmsh::option::setNumber("General.Clip0A", plane[0]);
+    gmsh::option::setNumber("General.Clip0B", plane[1]);
+    gmsh::option::setNumber("General.Clip0C", plane[2]);
+    gmsh::option::setNumber("General.Clip0D", plane[3]);
     gmsh::option::setNumber("General.ClipWholeElements", 1);
     gmsh::option::setNumber("Mesh.Clip", 1);
   }
@@ -240,6 +262,116 @@ void gui_show_view(int tag, double vmin, double vmax, bool cut) {
     gmsh::fltk::update();
     gmsh::graphics::draw();
   }
+}
+
+int gui_add_histogram_view(const std::vector<QualityHistogram>& series, const std::string& name) {
+  const int tag = gmsh::view::add(name);
+  // Scalar points along the x axis, two per bin (its left and right edge, the same value): the
+  // curvilinear abscissa of a "2D space" graph is then Q itself and the curve is a step.
+  const std::size_t bins = series.empty() ? 0 : series.front().fraction.size();
+  std::vector<double> data;
+  int nb_points = 0;
+  double top = 0;
+  for (std::size_t b = 0; b < bins; ++b)
+    for (int side = 0; side < 2; ++side) {
+      data.insert(data.end(), {static_cast<double>(b + side) / bins, 0, 0});
+      for (const auto& h : series) {
+        const double pct = b < h.fraction.size() ? 100 * h.fraction[b] : 0;
+        data.push_back(pct);
+        top = std::max(top, pct);
+      }
+      ++nb_points;
+    }
+  gmsh::view::addListData(tag, "SP", nb_points, data);
+  const std::string v = "View[" + std::to_string(gmsh::view::getIndex(tag)) + "].";
+  gmsh::option::setNumber(v + "Type", 2);  // 2D space: value against the abscissa along the points
+  gmsh::option::setNumber(v + "Axes", 2);  // box with ticks
+  gmsh::option::setString(v + "AxesLabelX", "Q");
+  gmsh::option::setString(v + "AxesFormatX", "%.1f");
+  gmsh::option::setString(v + "AxesFormatY", "%.0f");
+  gmsh::option::setNumber(v + "ShowTime", 0);
+  gmsh::option::setNumber(v + "RangeType", 2);
+  gmsh::option::setNumber(v + "CustomMin", 0);
+  gmsh::option::setNumber(v + "CustomMax", top > 0 ? top : 1);
+  gmsh::option::setNumber(v + "LineWidth", 2);
+  // Top left of the graphics window, about a third of its size.
+  double w = 600, h = 600;
+  gmsh::option::getNumber("General.GraphicsWidth", w);
+  gmsh::option::getNumber("General.GraphicsHeight", h);
+  gmsh::option::setNumber(v + "AutoPosition", 0);
+  gmsh::option::setNumber(v + "PositionX", 60);
+  gmsh::option::setNumber(v + "PositionY", 40);
+  gmsh::option::setNumber(v + "Width", std::max(200.0, 0.3 * w));
+  gmsh::option::setNumber(v + "Height", std::max(120.0, 0.25 * h));
+  return tag;
+}
+
+int gui_mark_views_stale(const std::vector<std::string>& names) {
+  int n = 0;
+  std::vector<int> tags;
+  gmsh::view::getTags(tags);
+  for (int t : tags) {
+    std::string name;
+    gmsh::option::getString(view_option(t, "Name"), name);
+    if (std::find(names.begin(), names.end(), name) == names.end()) continue;
+    gmsh::option::setString(view_option(t, "Name"), name + " (stale)");
+    ++n;
+  }
+  if (n > 0 && gmsh::fltk::isAvailable()) {
+    gmsh::fltk::update();
+    gmsh::graphics::draw();
+  }
+  return n;
+}
+
+std::string gui_display_json() {
+  auto num = [](const std::string& name) {
+    double v = 0;
+    gmsh::option::getNumber(name, v);
+    return v;
+  };
+  nlohmann::ordered_json j;
+  j["views"] = nlohmann::ordered_json::array();
+  std::vector<int> tags;
+  gmsh::view::getTags(tags);
+  for (int t : tags) {
+    std::string name;
+    gmsh::option::getString(view_option(t, "Name"), name);
+    nlohmann::ordered_json v;
+    v["tag"] = t;
+    v["name"] = name;
+    v["type"] = static_cast<int>(num(view_option(t, "Type")));
+    v["visible"] = static_cast<int>(num(view_option(t, "Visible")));
+    v["range_type"] = static_cast<int>(num(view_option(t, "RangeType")));
+    v["custom_min"] = num(view_option(t, "CustomMin"));
+    v["custom_max"] = num(view_option(t, "CustomMax"));
+    v["min"] = num(view_option(t, "Min"));
+    v["max"] = num(view_option(t, "Max"));
+    v["clip"] = static_cast<int>(num(view_option(t, "Clip")));
+    j["views"].push_back(v);
+  }
+  j["clip_plane"] = {num("General.Clip0A"), num("General.Clip0B"), num("General.Clip0C"),
+                     num("General.Clip0D")};
+  j["mesh_clip"] = static_cast<int>(num("Mesh.Clip"));
+  const auto n = camera_direction(num("General.RotationX"), num("General.RotationY"),
+                                  num("General.RotationZ"));
+  j["toward_camera"] = {n[0], n[1], n[2]};
+  return j.dump();
+}
+
+std::string gui_mesh_signature() {
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, uvw;
+  gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
+  // FNV-1a over the tags and the coordinates' bytes.
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  mix(tags.data(), tags.size() * sizeof(std::size_t));
+  mix(xyz.data(), xyz.size() * sizeof(double));
+  return std::to_string(tags.size()) + ":" + std::to_string(h);
 }
 
 }  // namespace cvtmesh

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/quality/quality_histogram.h"
+
 namespace cvtmesh {
 
 // One ONELAB parameter. The name is the path in the tree ("Group/Sub/0Label": '/' separates
@@ -96,10 +98,31 @@ class GuiLock {
 // Redraws the model after its mesh was replaced (Gmsh does not notice node moves by itself) and
 // refreshes the ONELAB tree.
 void gui_refresh();
-// Shows the view `tag` alone (the other views hidden), coloured per element over [vmin, vmax]
-// (vmax <= vmin: the view's own range). With cut, a 3D model is clipped by the plane x = centre of
-// its bounding box, whole elements kept, so that the quality inside shows and not only on the
+// Shows the view `tag` alone (the other views hidden, graphs excepted), coloured per element over
+// [vmin, vmax] (vmax <= vmin: the range of its values, set as a custom range so that it stays
+// when the cut hides some elements). With cut, a 3D model is clipped by the plane through the
+// centre of its bounding box that faces the camera (core/io/camera_cut.h), whole elements kept,
+// the half nearer to the camera removed, so that the quality inside shows and not only on the
 // boundary (Tools > Clipping turns it off).
 void gui_show_view(int tag, double vmin = 0, double vmax = 0, bool cut = false);
+
+// Adds a view named `name` that Gmsh draws as a 2D graph (View.Type 2, "2D space"): the
+// histograms as step curves over Q in [0, 1], in % of elements (the curve coloured by its value),
+// one time step per series (all with the same number of bins). Returns its tag.
+int gui_add_histogram_view(const std::vector<QualityHistogram>& series, const std::string& name);
+
+// Renames every view named as one of `names` to "<name> (stale)" (a view already marked is left
+// alone); returns how many were renamed.
+int gui_mark_views_stale(const std::vector<std::string>& names);
+
+// What the window shows, read back through Gmsh's option API (for --result-json and the tests):
+// {"views": [{"tag", "name", "type" (1: 3D, 2: 2D space graph, ...), "visible", "range_type",
+// "custom_min", "custom_max", "min", "max", "clip"}...], "clip_plane": [A, B, C, D], "mesh_clip",
+// "toward_camera": the camera direction of General.RotationX/Y/Z (core/io/camera_cut.h)}.
+std::string gui_display_json();
+
+// A fingerprint of the current model's mesh (node count, element count, a hash of the node
+// coordinates): it changes when the mesh is regenerated, edited or replaced.
+std::string gui_mesh_signature();
 
 }  // namespace cvtmesh

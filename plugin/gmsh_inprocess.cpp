@@ -47,6 +47,18 @@ std::vector<std::string> quality_view_names(int dim) {
   return names;
 }
 
+std::vector<std::string> our_view_names(bool stale) {
+  std::vector<std::string> names = quality_view_names(2);
+  for (const auto& n : quality_view_names(3))
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  names.push_back(kHistogramViewName);
+  if (stale) {
+    const std::size_t n = names.size();
+    for (std::size_t i = 0; i < n; ++i) names.push_back(names[i] + kStaleSuffix);
+  }
+  return names;
+}
+
 MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
   set_gmsh_initialized_by_caller(true);
   GmshSession session;
@@ -94,8 +106,7 @@ namespace {
 
 void remove_quality_views() {
   gmsh_checked("cannot remove the previous quality views", [&] {
-    std::vector<std::string> ours = quality_view_names(2);
-    for (const auto& n : quality_view_names(3)) ours.push_back(n);
+    const std::vector<std::string> ours = our_view_names(true);
     std::vector<int> tags;
     gmsh::view::getTags(tags);
     for (int tag : tags) {

@@ -53,8 +53,8 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options = {});
 // The same in three steps, for a caller that must keep the Gmsh calls in one thread and run the
 // optimization in another (the GUI). gmsh_read_current meshes the model first if asked to and
 // returns its mesh; gmsh_write_back replaces the current model's mesh by data, removes the stale
-// quality views of an earlier run and adds new ones if asked to. Gmsh must not be used by
-// anything else between the two calls.
+// quality views of an earlier run (and the histogram, stale or not) and adds new ones if asked to.
+// Gmsh must not be used by anything else between the two calls.
 MeshData gmsh_read_current(const GmshOptimizeOptions& options);
 GmshOptimizeResult gmsh_write_back(const MeshData& data, const OptimizeResult& result,
                                    const GmshOptimizeOptions& options);
@@ -69,5 +69,12 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options);
 
 // The names of the quality views gmsh_write_back adds for a dimension (2 or 3).
 std::vector<std::string> quality_view_names(int dim);
+
+// The name of the quality histogram the GUI and the ONELAB client add after a run (a graph view).
+inline const std::string kHistogramViewName = "Q histogram (% of elements)";
+// Every view name of ours: the quality views of both dimensions and the histogram, and with
+// stale their names marked " (stale)" too (what a later run removes).
+std::vector<std::string> our_view_names(bool stale = true);
+inline const std::string kStaleSuffix = " (stale)";
 
 }  // namespace cvtmesh

@@ -22,10 +22,13 @@
 #include "core/geometry/boundary_geometry.h"
 #include "core/io/atomic_file.h"
 #include "core/io/gmsh_cad_boundary.h"
+#include "core/quality/quality_stats.h"
+#include "core/quality/quality_histogram.h"
 #include "core/util/error.h"
 #include "plugin/gmsh_gui.h"
 #include "plugin/gmsh_inprocess.h"
 #include "plugin/panel.h"
+#include "plugin/stale_watch.h"
 
 namespace {
 
@@ -82,7 +85,8 @@ int parse(int argc, char** argv, Args& a) {
                "refused by default, with the file, line and command in the message console");
   app.add_option("--result-json", a.result_json,
                  "after each action, write its outcome to FILE (JSON: {\"action\": "
-                 "\"optimize\"|\"quality\", \"result\"|\"error\": ...})")
+                 "\"optimize\"|\"quality\"|\"stale\", \"result\"|\"stopped\"|\"error\"|"
+                 "\"changed\": ..., \"display\": the views and the cut})")
       ->option_text("FILE");
   double exit_after = 0;
   CLI::Option* exit_opt =
@@ -112,7 +116,8 @@ struct Job {
   GmshOptimizeOptions options;
   MeshData data;
   OptimizeResult result;
-  std::string error;  // empty: success
+  std::string error;     // empty: success
+  bool stopped = false;  // Stop was pressed: a notice, not an error
   bool running = false;
 };
 
@@ -166,6 +171,7 @@ class App {
     if (args_.run_on_start) pending_.push_back(kRun);
     while (gui_wait(0.25)) {
       if (exit_at_ && elapsed() >= *exit_at_) break;
+      watch_stale();
       std::string action = gui_take_action();
       if (action.empty() && !pending_.empty() && !job_.running) {
         action = pending_.front();
@@ -215,6 +221,7 @@ class App {
     job_.data = gmsh_read_current(job_.options);  // meshes the model first if it has no mesh
     gui_refresh();
     job_.cancel = false;
+    job_.stopped = false;
     job_.error.clear();
     job_.running = true;
     job_.options.optimize.boundary_model = locked_cad_boundary;  // the model's CAD, if any
@@ -235,7 +242,7 @@ class App {
       try {
         job_.result = optimize(job_.data, job_.options.optimize);
       } catch (const Cancelled&) {
-        job_.error = "cvtmesh: stopped; the mesh was left unchanged";
+        job_.stopped = true;
       } catch (const std::exception& e) {
         job_.error = std::string("cvtmesh: ") + e.what();
       } catch (...) {
@@ -251,6 +258,15 @@ class App {
     job_.thread.join();
     job_.running = false;
     gui_set_button("Run", kRun);
+    if (job_.stopped) {  // the user's choice: a notice in the console, not an error
+      const std::string m = "cvtmesh: stopped; the mesh was left unchanged";
+      tree_.info(m);
+      tree_.progress(m);
+      write_json("optimize", "stopped", m);
+      gui_refresh();
+      ran(1);
+      return;
+    }
     if (!job_.error.empty()) {
       report_error(job_.error);
       return;
@@ -258,11 +274,19 @@ class App {
     tree_.progress("cvtmesh: writing the optimized mesh back...");
     const GmshOptimizeResult r = gmsh_write_back(job_.data, job_.result, job_.options);
     plugin::show_results(tree_, r);
-    if (!r.views.empty()) gui_show_view(r.views.front(), 0, 1, true);  // Q over [0, 1], cut
+    int graph = 0;
+    if (!r.views.empty()) {
+      // The histogram of the result as a graph; Q over its own range, cut.
+      graph = gui_add_histogram_view({histogram(job_.data, "after")}, kHistogramViewName);
+      gui_show_view(r.views.front(), 0, 0, true);
+      watch_.arm(options_signature());
+    }
     gui_refresh();
     tree_.info(plugin::summary(r));
     tree_.progress(plugin::summary(r));
-    write_json("optimize", "result", nlohmann::ordered_json::parse(r.to_json()));
+    auto result = nlohmann::ordered_json::parse(r.to_json());
+    result["histogram_view"] = graph;
+    write_json("optimize", "result", result);
     ran(0);
   }
 
@@ -271,7 +295,13 @@ class App {
     o.generate = true;
     o.quality_views = true;
     const GmshQualityResult q = gmsh_quality(o);
-    if (!q.views.empty()) gui_show_view(q.views.front(), 0, 1, true);
+    int graph = 0;
+    if (!q.views.empty()) {
+      const MeshData current = gmsh_read_current(o);
+      graph = gui_add_histogram_view({histogram(current, "current")}, kHistogramViewName);
+      gui_show_view(q.views.front(), 0, 0, true);
+      watch_.arm(options_signature());
+    }
     gui_refresh();
     char buf[300];
     std::snprintf(buf, sizeof buf,
@@ -287,7 +317,37 @@ class App {
     t.columns = {q.stats};
     auto result = nlohmann::ordered_json::parse(t.to_json()).at(0);
     result["views"] = q.views;
+    result["histogram_view"] = graph;
     write_json("quality", "result", result);
+  }
+
+  static QualityHistogram histogram(const MeshData& d, const std::string& label) {
+    return quality_histogram(
+        d.dim == 3 ? element_qualities(d.tet, Measure::kQ) : element_qualities(d.tri, Measure::kQ),
+        20, label);
+  }
+
+  // The panel's options as text; a value the schema refuses counts as a change too.
+  std::string options_signature() {
+    try {
+      return plugin::panel_signature(plugin::read_panel(tree_));
+    } catch (const std::exception& e) {
+      return std::string("invalid: ") + e.what();
+    }
+  }
+
+  // Once a second while the views of a run are shown: a changed mesh or changed options mark
+  // them stale (their names end in " (stale)").
+  void watch_stale() {
+    if (job_.running || !watch_.armed() || elapsed() < next_watch_) return;
+    next_watch_ = elapsed() + 1.0;
+    const std::string what = watch_.check(options_signature());
+    if (what.empty()) return;
+    const std::string m = "cvtmesh: the " + what +
+                          " changed since the quality was shown: its views are marked (stale)";
+    tree_.info(m);
+    tree_.progress(m);
+    write_json("stale", "changed", what);
   }
 
   void report_error(const std::string& message) {
@@ -309,6 +369,10 @@ class App {
     nlohmann::ordered_json j;
     j["action"] = action;
     j[key] = value;
+    try {
+      j["display"] = nlohmann::ordered_json::parse(gui_display_json());
+    } catch (...) {
+    }
     // Written whole under a temporary name, then renamed: a watcher never sees half a file.
     try {
       AtomicFile f(args_.result_json);
@@ -330,6 +394,8 @@ class App {
   const Args& args_;
   LocalOnelab tree_;
   Job job_;
+  plugin::StaleWatch watch_;
+  double next_watch_ = 0;
   int dim_ = -1;
   std::vector<std::string> pending_;
   std::string action_ = "optimize";  // what an error is reported against

@@ -8,13 +8,19 @@
 // per-element quality, and shown in the GUI in place of the model (the next Run re-meshes the
 // model and starts again). Thin: the work is in core/.
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "plugin/gmsh_inprocess.h"
+#include "core/io/camera_cut.h"
 #include "core/quality/quality_fields.h"
+#include "core/quality/quality_histogram.h"
+#include "core/quality/quality_stats.h"
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/pipeline/optimize.h"
@@ -46,40 +52,119 @@ std::string output_path(const std::string& input) {
   return stem + ".msh";
 }
 
-// .geo-language text that shows the result in the GUI in place of the model: removes the quality
-// views of an earlier run (by name), replaces the model by the result ("Delete Model; Merge" --
-// the project file stays the model's, so the next Run re-meshes it), and shows the new Q view
-// like cvtmesh-gui does: alone, over [0, 1], in 3D cut by the plane x = x_mid (whole elements).
-std::string load_script(const MeshData& data, const std::string& path, std::size_t nb_views) {
-  // One statement per line: Gmsh runs a For loop by rewinding its input to the line after For.
-  std::vector<std::string> names;
-  for (int d : {2, 3})
-    for (const auto& n : quality_view_names(d))
-      if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
-  std::string ours;
+// .geo-language text: a For loop over the views whose name is one of `names`, running `body`
+// once for each (cvt_v: the view's index; one condition, so a body that deletes the view is not
+// followed by a test on an index that moved). One statement per line: Gmsh runs a For loop by
+// rewinding its input to the line after For.
+std::string for_our_views(const std::vector<std::string>& names, const std::string& body,
+                          bool backwards) {
+  std::string any;
   for (const auto& n : names)
-    ours += std::string(ours.empty() ? "" : " || ") + "(StrCmp(Sprintf(View[cvt_v].Name), \"" + n +
-            "\") == 0)";
-  std::string s = "For cvt_v In {PostProcessing.NbViews - 1 : 0 : -1}\nIf (" + ours +
-                  ")\nDelete View[cvt_v];\nEndIf\nEndFor\n";
-  s += "Delete Model;\nMerge \"" + path + "\";\n";
-  if (nb_views == 0) return s;
-  s += "cvt_q = PostProcessing.NbViews - " + std::to_string(nb_views) + ";\n";
-  s += "View[cvt_q].RangeType = 2;\nView[cvt_q].CustomMin = 0;\nView[cvt_q].CustomMax = 1;\n";
-  for (std::size_t v = 1; v < nb_views; ++v)
-    s += "View[cvt_q + " + std::to_string(v) + "].Visible = 0;\n";
-  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
-    double lo = data.tet.point(0)[0], hi = lo;
-    for (int v = 0; v < data.tet.nb_vertices(); ++v) {
-      lo = std::min(lo, data.tet.point(v)[0]);
-      hi = std::max(hi, data.tet.point(v)[0]);
-    }
-    s += "General.Clip0A = -1;\nGeneral.Clip0B = 0;\nGeneral.Clip0C = 0;\nGeneral.Clip0D = " +
-         std::to_string(0.5 * (lo + hi)) +
-         ";\nGeneral.ClipWholeElements = 1;\nView[cvt_q].Clip = 1;\nMesh.Clip = 1;\n";
+    any += std::string(any.empty() ? "" : " || ") + "(StrCmp(Sprintf(View[cvt_v].Name), \"" + n +
+           "\") == 0)";
+  std::string s = "If (PostProcessing.NbViews > 0)\n";
+  s += backwards ? "For cvt_v In {PostProcessing.NbViews - 1 : 0 : -1}\n"
+                 : "For cvt_v In {0 : PostProcessing.NbViews - 1}\n";
+  return s + "If (" + any + ")\n" + body + "EndIf\nEndFor\nEndIf\n";
+}
+
+// Renames the views of the last run "<name> (stale)" (the options changed since).
+std::string stale_script() {
+  const std::vector<std::string> names = our_view_names(false);
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string one = "View[cvt_v].Name = \"" + names[i] + kStaleSuffix + "\";\n";
+    s += for_our_views({names[i]}, one, false);
   }
   return s;
 }
+
+// The histograms as a list-based view drawn as a 2D graph (the .geo twin of
+// gui_add_histogram_view): scalar points along x, two per bin, one time step per series.
+std::string histogram_script(const std::vector<QualityHistogram>& series) {
+  const std::size_t bins = series.front().fraction.size();
+  std::string s = "View \"" + kHistogramViewName + "\" {\n";
+  double top = 0;
+  char buf[64];
+  for (std::size_t b = 0; b < bins; ++b)
+    for (int side = 0; side < 2; ++side) {
+      std::snprintf(buf, sizeof buf, "SP(%.6g, 0, 0){", static_cast<double>(b + side) / bins);
+      s += buf;
+      for (std::size_t k = 0; k < series.size(); ++k) {
+        const double pct = 100 * series[k].fraction[b];
+        top = std::max(top, pct);
+        std::snprintf(buf, sizeof buf, "%s%.6g", k ? ", " : "", pct);
+        s += buf;
+      }
+      s += "};\n";
+    }
+  s += "};\ncvt_h = PostProcessing.NbViews - 1;\n";
+  std::snprintf(buf, sizeof buf, "View[cvt_h].CustomMax = %.6g;\n", top > 0 ? top : 1);
+  s += "View[cvt_h].Type = 2;\nView[cvt_h].Axes = 2;\nView[cvt_h].AxesLabelX = \"Q\";\n"
+       "View[cvt_h].AxesFormatX = \"%.1f\";\nView[cvt_h].AxesFormatY = \"%.0f\";\n"
+       "View[cvt_h].ShowTime = 0;\nView[cvt_h].RangeType = 2;\n"
+       "View[cvt_h].CustomMin = 0;\n" +
+       std::string(buf) +
+       "View[cvt_h].LineWidth = 2;\n"
+       "View[cvt_h].AutoPosition = 0;\nView[cvt_h].PositionX = 60;\nView[cvt_h].PositionY = 40;\n"
+       "View[cvt_h].Width = General.GraphicsWidth * 0.3;\n"
+       "View[cvt_h].Height = General.GraphicsHeight * 0.25;\n";
+  return s;
+}
+
+// .geo-language text that shows the result in the GUI in place of the model: removes the views
+// of an earlier run (by name, stale or not), replaces the model by the result ("Delete Model;
+// Merge" -- the project file stays the model's, so the next Run re-meshes it), and shows the new
+// Q view like cvtmesh-gui does: alone, over the range of its values, in 3D cut by the plane
+// through the centre that faces the camera (whole elements), with the result's histogram as a
+// graph.
+std::string load_script(const MeshData& data, const std::string& path,
+                        const std::vector<ElementField>& fields,
+                        const std::vector<QualityHistogram>& histograms) {
+  std::string s = for_our_views(our_view_names(true), "Delete View[cvt_v];\n", true);
+  s += "Delete Model;\nMerge \"" + path + "\";\n";
+  if (fields.empty()) return s;
+  s += "cvt_q = PostProcessing.NbViews - " + std::to_string(fields.size()) + ";\n";
+  double lo = 0, hi = 0;
+  bool any = false;
+  for (double v : fields.front().values)
+    if (std::isfinite(v)) {
+      lo = any ? std::min(lo, v) : v;
+      hi = any ? std::max(hi, v) : v;
+      any = true;
+    }
+  if (hi <= lo) hi = lo + 1e-6;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "View[cvt_q].RangeType = 2;\nView[cvt_q].CustomMin = %.17g;\n"
+                "View[cvt_q].CustomMax = %.17g;\n",
+                lo, hi);
+  s += buf;
+  for (std::size_t v = 1; v < fields.size(); ++v)
+    s += "View[cvt_q + " + std::to_string(v) + "].Visible = 0;\n";
+  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
+    std::array<double, 3> lo3, hi3;
+    for (int k = 0; k < 3; ++k) lo3[k] = hi3[k] = data.tet.point(0)[k];
+    for (int v = 0; v < data.tet.nb_vertices(); ++v)
+      for (int k = 0; k < 3; ++k) {
+        lo3[k] = std::min(lo3[k], data.tet.point(v)[k]);
+        hi3[k] = std::max(hi3[k], data.tet.point(v)[k]);
+      }
+    s += camera_cut_geo({0.5 * (lo3[0] + hi3[0]), 0.5 * (lo3[1] + hi3[1]), 0.5 * (lo3[2] + hi3[2])},
+                        "cvt_q");
+  }
+  if (!histograms.empty()) s += histogram_script(histograms);
+  return s;
+}
+
+QualityHistogram histogram(const MeshData& d, const std::string& label) {
+  return quality_histogram(
+      d.dim == 3 ? element_qualities(d.tet, Measure::kQ) : element_qualities(d.tri, Measure::kQ),
+      20, label);
+}
+
+// The options of the last run, kept in the tree (hidden) to tell when they change.
+const std::string kRunOptions = plugin::kGroup + "/9Results/run options";
 
 int compute(plugin::RemoteOnelab& tree) {
   const std::string in = tree.string("Gmsh/MshFileName").value_or("");
@@ -91,6 +176,7 @@ int compute(plugin::RemoteOnelab& tree) {
   MeshData data = read_mesh(in);
   if (data.dim != plugin::panel_dim(tree)) plugin::define_panel(tree, data.dim);
   GmshOptimizeOptions o = plugin::read_panel(tree);
+  const std::string signature = plugin::panel_signature(o);
   const int max_it = o.optimize.max_iterations;
   o.optimize.progress = [&](const OptimizeProgress& p) {
     tree.progress(plugin::progress_text(p, max_it));
@@ -111,8 +197,39 @@ int compute(plugin::RemoteOnelab& tree) {
   plugin::show_results(tree, r);
   tree.info(plugin::summary(r));
   tree.info("cvtmesh: wrote " + out + "; showing it in place of the model");
-  tree.parse_string(load_script(data, out, w.fields.size()));
+  std::vector<QualityHistogram> histograms;
+  if (o.quality_views) histograms = {histogram(data, "after")};
+  tree.parse_string(load_script(data, out, w.fields, histograms));
+  OnelabParam run_options;
+  run_options.name = kRunOptions;
+  run_options.is_string = true;
+  run_options.text = o.quality_views ? signature : "";
+  run_options.visible = false;
+  run_options.never_changed = true;
+  tree.set(run_options);
   return 0;
+}
+
+// On check (a parameter changed): the views of the last run are marked stale once the options
+// differ from those it ran with.
+void check(plugin::RemoteOnelab& tree) {
+  const std::string ran = tree.string(kRunOptions).value_or("");
+  if (ran.empty()) return;
+  std::string now;
+  try {
+    now = plugin::panel_signature(plugin::read_panel(tree));
+  } catch (const std::exception& e) {
+    now = std::string("invalid: ") + e.what();
+  }
+  if (now == ran) return;
+  tree.parse_string(stale_script());
+  tree.info("cvtmesh: the options changed since the run: its views are marked (stale)");
+  OnelabParam run_options;
+  run_options.name = kRunOptions;
+  run_options.is_string = true;
+  run_options.visible = false;
+  run_options.never_changed = true;
+  tree.set(run_options);
 }
 
 }  // namespace
@@ -137,6 +254,7 @@ int main(int argc, char** argv) {
     if (dim != 2 && dim != 3) dim = plugin::panel_dim(*tree);
     plugin::define_panel(*tree, dim == 2 ? 2 : 3);
     if (action == "compute") return compute(*tree);
+    if (action == "check") check(*tree);
     return 0;
   } catch (const std::exception& e) {
     tree->error(std::string("cvtmesh: ") + e.what());

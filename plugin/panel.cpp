@@ -198,6 +198,13 @@ GmshOptimizeOptions read_panel(OnelabTree& tree) {
   return o;
 }
 
+std::string panel_signature(const GmshOptimizeOptions& o) {
+  std::string s;
+  for (const OptionSpec& spec : option_schema())
+    s += spec.name + "=" + value_text(spec, o.optimize) + ";";
+  return s + "quality_views=" + std::to_string(o.quality_views) + ";dim=" + std::to_string(o.dim);
+}
+
 void show_results(OnelabTree& tree, const GmshOptimizeResult& r) {
   const QualityStats& b = r.result.before;
   const QualityStats& a = r.result.after;

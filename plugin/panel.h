@@ -39,6 +39,10 @@ int panel_dim(OnelabTree& tree);
 // The options the inputs say. Throws InputError for a method the tree does not offer.
 GmshOptimizeOptions read_panel(OnelabTree& tree);
 
+// The options as one line of text (every schema option's value, the quality views): two runs
+// with the same signature ran with the same options. What marks a run's views stale.
+std::string panel_signature(const GmshOptimizeOptions& o);
+
 // Writes the read-only results (iterations, time, Q avg/min and bad % before and after).
 void show_results(OnelabTree& tree, const GmshOptimizeResult& r);
 

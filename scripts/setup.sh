@@ -11,7 +11,7 @@ PKGS=(
   libcli11-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev
   libcgal-dev python3-netgen python3-numpy
   pybind11-dev python3-dev python3 python3-meshio python3-scipy
-  xvfb xauth xdotool imagemagick
+  xvfb xauth xdotool imagemagick librsvg2-bin
   clang libclang-rt-14-dev
 )
 missing=()

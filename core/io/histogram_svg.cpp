@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/io/histogram_png.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -128,15 +129,18 @@ std::string histogram_svg(const std::vector<QualityHistogram>& series) {
 
 void check_histogram_path(const std::string& path) {
   const std::filesystem::path p(path);
-  if (p.extension() != ".svg")
-    throw OutputError("'" + path + "': a histogram is written as .svg (PNG is not supported)");
+  if (p.extension() != ".svg" && p.extension() != ".png")
+    throw OutputError("'" + path + "': a histogram is written as .svg or .png");
   const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : ".";
   if (!std::filesystem::is_directory(dir))
     throw OutputError("'" + path + "': the directory '" + dir.string() + "' does not exist");
+  if (p.extension() == ".png") check_histogram_png(path);
 }
 
 void write_histogram_svg(const std::vector<QualityHistogram>& series, const std::string& path,
                          const OutputPolicy& policy) {
+  if (std::filesystem::path(path).extension() != ".svg")
+    throw OutputError("'" + path + "': write_histogram_svg writes .svg only");
   check_histogram_path(path);
   if (!policy.force && std::filesystem::exists(path))
     throw OutputError("'" + path + "' exists (use --force to replace it)");
@@ -147,6 +151,15 @@ void write_histogram_svg(const std::vector<QualityHistogram>& series, const std:
     if (!o) throw OutputError("cannot write '" + path + "'");
   }
   f.commit();
+}
+
+void write_histogram(const std::vector<QualityHistogram>& series, const std::string& path,
+                     const OutputPolicy& policy) {
+  check_histogram_path(path);
+  if (std::filesystem::path(path).extension() == ".png")
+    write_histogram_png(series, path, policy);
+  else
+    write_histogram_svg(series, path, policy);
 }
 
 }  // namespace cvtmesh

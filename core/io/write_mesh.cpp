@@ -5,6 +5,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <map>
 #include <vector>
 
+#include "core/io/camera_cut.h"
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
@@ -120,8 +122,10 @@ bool holds_fields(const std::string& ext) {
 
 constexpr const char* kOptMarker = "// Written by cvtmesh";
 
-// PATH.opt, merged by Gmsh when it opens PATH: the first field's view alone, over its range.
-std::string quality_opt(const std::string& path, const std::vector<ElementField>& fields) {
+// PATH.opt, merged by Gmsh when it opens PATH: the first field's view alone, over its range, and
+// for a volume mesh cut through its centre by the plane that faces the camera (camera_cut.h).
+std::string quality_opt(const MeshData& data, const std::string& path,
+                        const std::vector<ElementField>& fields) {
   double lo = 0, hi = 0;
   bool any = false;
   for (double v : fields.front().values)
@@ -145,6 +149,17 @@ std::string quality_opt(const std::string& path, const std::vector<ElementField>
   s += buf;
   for (std::size_t v = 1; v < fields.size(); ++v)
     s += "View[" + std::to_string(v) + "].Visible = 0;\n";
+  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
+    std::array<double, 3> lo3, hi3;
+    for (int k = 0; k < 3; ++k) lo3[k] = hi3[k] = data.tet.point(0)[k];
+    for (int v = 0; v < data.tet.nb_vertices(); ++v)
+      for (int k = 0; k < 3; ++k) {
+        lo3[k] = std::min(lo3[k], data.tet.point(v)[k]);
+        hi3[k] = std::max(hi3[k], data.tet.point(v)[k]);
+      }
+    s += camera_cut_geo({0.5 * (lo3[0] + hi3[0]), 0.5 * (lo3[1] + hi3[1]), 0.5 * (lo3[2] + hi3[2])},
+                        "0");
+  }
   return s;
 }
 
@@ -155,7 +170,7 @@ bool is_our_opt(const std::string& opt) {
 }
 
 // Writes PATH.opt with fields, or removes a stale one of ours without; a user's own is kept.
-void write_companion_opt(const std::string& path, const WriteOptions& o) {
+void write_companion_opt(const MeshData& data, const std::string& path, const WriteOptions& o) {
   const std::string opt = path + ".opt";
   std::error_code ec;
   const bool exists = std::filesystem::exists(opt, ec);
@@ -167,7 +182,7 @@ void write_companion_opt(const std::string& path, const WriteOptions& o) {
   AtomicFile out(opt);
   {
     std::ofstream f(out.temp_path());
-    f << quality_opt(std::filesystem::path(path).filename().string(), o.fields);
+    f << quality_opt(data, std::filesystem::path(path).filename().string(), o.fields);
     if (!f.flush()) throw OutputError("cannot write '" + opt + "'");
   }
   out.commit();
@@ -241,7 +256,7 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
       write_with_gmsh(data, out.temp_path(), path, ext, options);
   });
   out.commit();
-  if (ext == ".msh") write_companion_opt(path, options);
+  if (ext == ".msh") write_companion_opt(data, path, options);
 }
 
 }  // namespace cvtmesh

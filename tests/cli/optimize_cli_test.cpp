@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "core/io/histogram_png.h"
 #include "core/io/read_mesh.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
@@ -97,6 +99,14 @@ TEST(OptimizeCli, CompareShowsTheMethodsThemselves) {
   };
   for (const char* r : {"Q_min", "average quality", "min dihedral angle"})
     EXPECT_EQ(row(a, r), row(b, r)) << r;
+  // --save also wrote the columns' histograms: SVG always, PNG when rsvg-convert is installed.
+  EXPECT_TRUE(std::filesystem::exists(dir + "/histogram.svg"));
+  if (!histogram_png_rasterizer().empty()) {
+    std::ifstream png(dir + "/histogram.png", std::ios::binary);
+    char sig[8] = {};
+    ASSERT_TRUE(png.read(sig, 8)) << "no " << dir << "/histogram.png";
+    EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+  }
 }
 
 }  // namespace

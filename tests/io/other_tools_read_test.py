@@ -72,6 +72,25 @@ def gmsh_summary(path):
         gmsh.finalize()
 
 
+def gmsh_clip(path):
+    """What the .opt sets for the cut: (View[0].Clip, Mesh.Clip, [A, B, C, D], the direction
+    toward the camera for Gmsh's view angles)."""
+    gmsh.initialize(["gmsh", "-nopopup"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        gmsh.open(path)
+        plane = [gmsh.option.getNumber(f"General.Clip0{c}") for c in "ABCD"]
+        rx, ry, rz = (math.radians(gmsh.option.getNumber(f"General.Rotation{c}")) for c in "XYZ")
+        # The third row of Rx Ry Rz: the camera looks along -z in eye coordinates.
+        toward = [-math.cos(rx) * math.sin(ry) * math.cos(rz) + math.sin(rx) * math.sin(rz),
+                  math.cos(rx) * math.sin(ry) * math.sin(rz) + math.sin(rx) * math.cos(rz),
+                  math.cos(rx) * math.cos(ry)]
+        return (gmsh.option.getNumber("View[0].Clip"), gmsh.option.getNumber("Mesh.Clip"), plane,
+                toward)
+    finally:
+        gmsh.finalize()
+
+
 tmp = tempfile.mkdtemp(prefix="cvtmesh-tools-")
 cs = os.path.join(GEO, "cube_sphere.geo")
 quad = os.path.join(GEO, "quad.geo")
@@ -182,6 +201,19 @@ for version in ("4.1", "2.2"):
                       f"{tag}: the .opt fits the colour range to Q ({views[0]}, data "
                       f"[{min(qs)}, {max(qs)}])")
             check(os.path.exists(out + ".opt"), f"{tag}: companion .opt written")
+            view_clip, mesh_clip, plane, toward = gmsh_clip(out)
+            if model == cs:
+                # The cut faces the camera: its normal is the view direction (the far half kept,
+                # A x + B y + C z + D >= 0), through the centre of the cube [0, 1]^3.
+                check(view_clip == 1 and mesh_clip == 1, f"{tag}: the .opt cuts the Q view and "
+                      f"the mesh ({view_clip}, {mesh_clip})")
+                check(all(abs(plane[k] + toward[k]) < 1e-9 for k in range(3)),
+                      f"{tag}: the cut faces the camera ({plane}, toward the camera {toward})")
+                centre = [0.5, 0.5, 0.5]
+                check(abs(sum(plane[k] * centre[k] for k in range(3)) + plane[3]) < 1e-6,
+                      f"{tag}: the cut goes through the centre ({plane})")
+            else:
+                check(view_clip == 0, f"{tag}: a planar mesh is not cut ({view_clip})")
 
 # Writing again without --quality removes our stale .opt.
 out = os.path.join(tmp, "q_cube_sphere.geo_4.1.msh")

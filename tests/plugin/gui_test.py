@@ -5,7 +5,12 @@
   shown before is the "before" of the run, the run raises it, screenshots before/after are kept
   as artifacts.
 - Run triggered programmatically (--run-on-start, the same ONELAB action a press sets).
-- Stop (the Run button while running) ends a long run; the mesh is left alone.
+- After a run (read back through Gmsh's option API, the result file's "display"): the histogram
+  is a graph view (View.Type 2) beside the Q view; the Q view's colour range is its data range;
+  the cut plane faces the camera (its normal is the view direction of General.RotationX/Y/Z).
+- Stop (the Run button while running) ends a long run; the mesh is left alone; it is reported as
+  a notice (Info), not an error.
+- An input changed after a run (a click on a check box) renames the run's views "... (stale)".
 - A model that cannot be read: the error reaches the console and the result file, no crash.
 
 Environment: CVTMESH_GUI (the executable), CVTMESH_SOURCE_DIR, CVTMESH_ARTIFACTS (screenshots).
@@ -74,7 +79,8 @@ class Gui(unittest.TestCase):
         after_png = os.path.join(art, "gui_after.png")
         self.start("--show-quality", "--max-iterations", "8", "--exit-after-run", "2")
         wid = xu.window("Gmsh")
-        quality = self.result_of("quality")["result"]
+        q = self.result_of("quality")
+        quality, self.quality_display = q["result"], q["display"]
         time.sleep(1.0)  # let the window repaint
         w, h, colours = xu.screenshot(before_png)
         # A synthetic click on the Run button, at the bottom right of the menu tree.
@@ -97,10 +103,36 @@ class Gui(unittest.TestCase):
         self.assertGreater(r["after"]["average_quality"], r["before"]["average_quality"])
         self.assertEqual(len(r["views"]), 3)
         self.assertIn(f"cvtmesh: {r['method']} on", out)  # summary in the message console
+        self.check_display(run["display"], r["views"][0], r["histogram_view"])
+        self.check_display(self.quality_display, quality["views"][0], quality["histogram_view"])
         # The screenshots show a drawn window (many colours: the view's colour map) that changed.
         self.assertEqual((w, h), (1280, 900))
         self.assertGreater(colours, 200)
         self.assertGreater(xu.pixels_differing(before_png, after_png), 5000)
+
+    def check_display(self, display, q_tag, graph_tag):
+        views = {v["tag"]: v for v in display["views"]}
+        # The histogram: a graph (2D space) view, visible with the Q view, nothing else shown.
+        self.assertIn(graph_tag, views, display)
+        graph, q = views[graph_tag], views[q_tag]
+        self.assertEqual(graph["type"], 2, graph)
+        self.assertEqual(graph["visible"], 1, graph)
+        self.assertEqual(graph["name"], "Q histogram (% of elements)")
+        self.assertEqual([v["tag"] for v in display["views"] if v["visible"]],
+                         sorted([q_tag, graph_tag]))
+        # The Q view's colour range is the range of its values (custom, so the cut keeps it).
+        self.assertEqual(q["range_type"], 2, q)
+        self.assertAlmostEqual(q["custom_min"], q["min"], places=12)
+        self.assertAlmostEqual(q["custom_max"], q["max"], places=12)
+        self.assertGreater(q["custom_min"], 0)
+        self.assertLess(q["custom_max"], 1)
+        # The cut faces the camera: the plane's normal is minus the direction toward the camera.
+        self.assertEqual(q["clip"], 1)
+        self.assertEqual(display["mesh_clip"], 1)
+        plane, toward = display["clip_plane"], display["toward_camera"]
+        for k in range(3):
+            self.assertAlmostEqual(plane[k], -toward[k], places=9, msg=display)
+        self.assertGreater(abs(toward[2]), 0.1)  # with the test's 3/4 view, not the plane x = c
 
     def test_run_on_start(self):
         self.start("--run-on-start", "--max-iterations", "8", "--exit-after-run", "0")
@@ -110,6 +142,23 @@ class Gui(unittest.TestCase):
         self.assertEqual(run["result"]["iterations"], 8)
         self.assertGreater(run["result"]["after"]["average_quality"],
                            run["result"]["before"]["average_quality"])
+
+    def test_views_are_marked_stale_when_an_option_changes(self):
+        self.start("--run-on-start", "--max-iterations", "4")
+        wid = xu.window("Gmsh")
+        run = self.result_of("optimize")
+        self.assertIn("result", run, run)
+        time.sleep(1.5)  # the watch compares once a second: nothing changed yet
+        self.assertEqual(xu.read_json(self.result)["action"], "optimize")
+        # A synthetic click on the panel's "Quality views" check box (left of the tree, below
+        # Sizing): an input changed after the run.
+        xu.click(wid, 51, 302)
+        stale = self.result_of("stale", timeout=30, keys=("changed",))
+        self.assertEqual(stale["changed"], "options")
+        names = [v["name"] for v in stale["display"]["views"]]
+        self.assertEqual(len(names), 4, names)  # Q, radius ratio, min angle, histogram
+        for n in names:
+            self.assertTrue(n.endswith(" (stale)"), names)
 
     def test_a_cad_ball_moves_its_boundary_on_the_cad(self):
         ball = os.path.join(self.tmp.name, "ball.geo")
@@ -135,10 +184,14 @@ class Gui(unittest.TestCase):
         time.sleep(1.0)
         _, height = xu.window_size(wid)
         xu.click(wid, MENU_WIDTH - 80, height - 39)  # the Run button reads Stop while running
-        run = self.result_of("optimize", timeout=60)
+        run = self.result_of("optimize", timeout=60, keys=("stopped", "result", "error"))
         status, out = self.finish()
-        self.assertEqual(status, 1, out)
-        self.assertIn("stopped; the mesh was left unchanged", run["error"])
+        self.assertEqual(status, 1, out)  # not a success, for --exit-after-run
+        self.assertNotIn("error", run, run)
+        self.assertIn("stopped; the mesh was left unchanged", run["stopped"])
+        # A notice in the message console (Gmsh's "Info" level), not a red error.
+        self.assertIn("Info    : cvtmesh: stopped; the mesh was left unchanged", out)
+        self.assertNotIn("Error   : cvtmesh", out)
 
     def test_unreadable_model_is_reported_not_crashed(self):
         missing = os.path.join(self.tmp.name, "missing.geo")

@@ -109,6 +109,12 @@ class Onelab(unittest.TestCase):
         self.assertIn(f"cvtmesh - cvtmesh: optimizing {msh_in}", log)  # client messages
         self.assertIn(f"Reading '{msh_out}'", log)  # Gmsh opened the result
         self.check_results(os.path.join(self.dir, "model.db"), msh_in, msh_out, 8)
+        # Gmsh ran the client's .geo text (views of an earlier run removed, Q over its range, the
+        # cut facing the camera, the histogram graph) without an error.
+        self.assertNotIn("Error", log)
+        # The options of the run are kept (hidden) to mark its views stale when they change.
+        self.assertIn("method=", read_db(os.path.join(self.dir, "model.db"))[
+            f"{GROUP}/9Results/run options"][0])
         # The result carries the quality views and the model's physical groups.
         with open(msh_out, errors="replace") as f:
             text = f.read()
