@@ -137,7 +137,7 @@ std::string ProgressDisplay::line() const {
     std::snprintf(buf, sizeof buf, "  Q_min %.4f  Q_avg %.4f", p.q_min, p.q_avg);
     l += buf;
   }
-  if (lloyd_like(p) && mode_ == Mode::kTerminal && !verbose_) {
+  if (lloyd_like(p) && mode_ == Mode::kTerminal && !verbose_ && !phase_ended_) {
     const double eta = lloyd_eta(history_, p.iteration, p.max_iterations, p.tolerance);
     if (eta >= 0) l += "  ETA " + duration_text(eta);
   }
@@ -162,7 +162,9 @@ void ProgressDisplay::finish() {
   if (phase_.empty() || mode_ == Mode::kQuiet) return;
   const double s = seconds_between(start_, std::chrono::steady_clock::now());
   if (!verbose_) {
+    phase_ended_ = true;  // the kept line has no ETA
     std::string l = line();
+    phase_ended_ = false;
     if (mode_ == Mode::kTerminal && !has_last_) l.resize(l.size() - 4);  // drop " ..."
     // Unwinding (an error ends the run): the message that follows says why.
     l += std::uncaught_exceptions() > 0 ? std::string("  (stopped)") : "  (" + duration_text(s) + ")";

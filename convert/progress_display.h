@@ -50,6 +50,7 @@ class ProgressDisplay {
   std::vector<std::pair<double, double>> history_;
   OptimizeProgress last_;
   bool has_last_ = false;
+  bool phase_ended_ = false;  // finish() is drawing the line that stays
 };
 
 // The ETA of a Lloyd-type phase, in seconds (negative: unknown): the iterations left until D

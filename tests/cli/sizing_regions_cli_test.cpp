@@ -171,7 +171,9 @@ TEST(RegionsCli, OnlyTheSelectedVolumeChangesAndItImproves) {
   for (const PhysicalGroup& g : a.model.groups)
     if (g.dim == 3 && g.entities.size() == 1) tag[g.name] = g.entities[0];
   ASSERT_TRUE(tag.count("ball") && tag.count("fluid"));
-  for (const std::string sel : {" --physical ball", " --regions " + std::to_string(tag["ball"])}) {
+  const std::vector<std::string> selections = {" --physical ball",
+                                               " --regions " + std::to_string(tag["ball"])};
+  for (const std::string& sel : selections) {
     const std::string out = dir + "/out.msh";
     ASSERT_EQ(testing::run(cli() + " optimize " + in + sel + " --max-iterations 10 -o " + out, &log),
               0)
