@@ -36,12 +36,14 @@ std::string phase_name(const std::string& phase) {
   return phase;
 }
 
-bool lloyd_like(const OptimizeProgress& p) { return p.max_iterations > 0; }
+bool lloyd_like(const OptimizeProgress& p) {
+  return p.max_iterations > 0;
+}
 
 }  // namespace
 
-double lloyd_eta(const std::vector<std::pair<double, double>>& h, int iteration,
-                 int max_iterations, double tolerance) {
+double lloyd_eta(const std::vector<std::pair<double, double>>& h, int iteration, int max_iterations,
+                 double tolerance) {
   if (h.size() < 3 || iteration <= 0) return -1;
   const double per_iteration = h.back().first / static_cast<double>(h.size());
   int left = std::max(0, max_iterations - iteration);
@@ -100,8 +102,8 @@ void ProgressDisplay::update(const OptimizeProgress& p) {
                     p.rebuilt ? "rebuilt, " : "", p.nb_flips);
       l += buf;
       if (p.nb_stuck_faces + p.nb_short_moves > 0) {
-        std::snprintf(buf, sizeof buf, ", %d faces not Delaunay, %d moves short",
-                      p.nb_stuck_faces, p.nb_short_moves);
+        std::snprintf(buf, sizeof buf, ", %d faces not Delaunay, %d moves short", p.nb_stuck_faces,
+                      p.nb_short_moves);
         l += buf;
       }
       std::snprintf(buf, sizeof buf, "), %.2fs]", p.seconds_other);
@@ -167,7 +169,8 @@ void ProgressDisplay::finish() {
     phase_ended_ = false;
     if (mode_ == Mode::kTerminal && !has_last_) l.resize(l.size() - 4);  // drop " ..."
     // Unwinding (an error ends the run): the message that follows says why.
-    l += std::uncaught_exceptions() > 0 ? std::string("  (stopped)") : "  (" + duration_text(s) + ")";
+    l += std::uncaught_exceptions() > 0 ? std::string("  (stopped)")
+                                        : "  (" + duration_text(s) + ")";
     if (mode_ == Mode::kTerminal)
       std::fprintf(out_, "\r\033[K%s\n", l.c_str());
     else

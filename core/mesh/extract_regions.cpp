@@ -15,8 +15,7 @@ RegionSubmesh extract_regions(const TetMesh& m, const std::vector<int>& regions)
   std::vector<char> in_sel(nv, 0), in_other(nv, 0);
   for (int t = 0; t < nt; ++t) {
     if (m.tets[4 * t] < 0) continue;
-    const bool sel =
-        std::find(regions.begin(), regions.end(), m.tet_region[t]) != regions.end();
+    const bool sel = std::find(regions.begin(), regions.end(), m.tet_region[t]) != regions.end();
     r.selected_tet[t] = sel;
     for (int k = 0; k < 4; ++k) (sel ? in_sel : in_other)[m.tets[4 * t + k]] = 1;
   }

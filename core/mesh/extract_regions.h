@@ -11,11 +11,11 @@ namespace cvtmesh {
 
 struct RegionSubmesh {
   TetMesh mesh;  // the selected tets, in the parent's order; node_tags[i] = i + 1 (see merge)
-  std::vector<int> to_parent;              // #V_sub: the parent vertex of each sub vertex
-  std::vector<std::size_t> parent_tags;    // #V_sub: the parent's node tags (empty if it had none)
-  std::vector<char> selected_tet;          // #T_parent: 1 for a tet of the selection
-  std::vector<char> selected_tri;          // #F_parent: 1 for a triangle carried by the sub
-  int nb_interface = 0;                    // vertices pinned (shared with the other regions)
+  std::vector<int> to_parent;            // #V_sub: the parent vertex of each sub vertex
+  std::vector<std::size_t> parent_tags;  // #V_sub: the parent's node tags (empty if it had none)
+  std::vector<char> selected_tet;        // #T_parent: 1 for a tet of the selection
+  std::vector<char> selected_tri;        // #F_parent: 1 for a triangle carried by the sub
+  int nb_interface = 0;                  // vertices pinned (shared with the other regions)
   int nb_added_faces = 0;  // boundary faces of the sub that had no triangle (added, dropped back)
 };
 

@@ -62,7 +62,8 @@ void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) 
   std::vector<FaceKey> carried, got;
   for (int f = 0; f < parent.nb_tris(); ++f)
     if (x.selected_tri[f])
-      carried.push_back(face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
+      carried.push_back(
+          face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
   const int added_surface = x.nb_added_faces ? x.mesh.tri_surface.back() : 0;
   for (int f = 0; f < sub.nb_tris(); ++f) {
     if (x.nb_added_faces && sub.tri_surface[f] == added_surface) continue;

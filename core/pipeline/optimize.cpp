@@ -39,7 +39,8 @@ namespace {
 
 std::shared_ptr<const SizingField3> sizing3(const TetMesh& mesh, const OptimizeOptions& o) {
   if (sizing_is_path(o) && o.sizing_reference)  // validate() checked its dimension
-    return std::shared_ptr<const SizingField3>(make_mesh_sizing3(o.sizing_reference->tet).release());
+    return std::shared_ptr<const SizingField3>(
+        make_mesh_sizing3(o.sizing_reference->tet).release());
   if (o.sizing == "mesh")
     return std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
   if (o.sizing == "uniform")
@@ -476,11 +477,11 @@ OptimizeResult optimize_selection(MeshData& data, const OptimizeOptions& options
   merge_regions(data.tet, x, sub.tet);
   std::string list;
   for (int t : tags) list += (list.empty() ? "" : ", ") + std::to_string(t);
-  r.notes.insert(r.notes.begin(),
-                 "only volume" + std::string(tags.size() > 1 ? "s " : " ") + list + " optimized (" +
-                     std::to_string(sub.tet.nb_tets()) + " tets); the other volumes kept exactly, "
-                     "the selection's boundary fixed (" + std::to_string(x.nb_interface) +
-                     " interface vertices)");
+  r.notes.insert(r.notes.begin(), "only volume" + std::string(tags.size() > 1 ? "s " : " ") + list +
+                                      " optimized (" + std::to_string(sub.tet.nb_tets()) +
+                                      " tets); the other volumes kept exactly, "
+                                      "the selection's boundary fixed (" +
+                                      std::to_string(x.nb_interface) + " interface vertices)");
   return r;
 }
 

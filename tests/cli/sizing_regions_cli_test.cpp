@@ -19,7 +19,9 @@
 namespace cvtmesh {
 namespace {
 
-std::string cli() { return testing::cli_path(); }
+std::string cli() {
+  return testing::cli_path();
+}
 
 // The paper's washer through the CLI, as a user runs it (issue 15, item 6): the Gmsh mesh of the
 // model is the reference of the sizing, the ClusPert mesh is optimized. The issue's target is the
@@ -48,8 +50,7 @@ TEST(SizingCli, WasherFromClusPertReachesThePapersTable5WithTheModelsSizing) {
   EXPECT_LE(s.max_angle, 92.0) << log;
   // The same optimization with the input's own sizing (the default for a mesh file) keeps the
   // cluster: the reference is what makes the difference.
-  ASSERT_EQ(testing::run(cli() + " optimize " + p + " -o " + dir + "/own.msh" + kOptions, &log),
-            0)
+  ASSERT_EQ(testing::run(cli() + " optimize " + p + " -o " + dir + "/own.msh" + kOptions, &log), 0)
       << log;
   EXPECT_LT(quality_stats(read_mesh(dir + "/own.msh").tri, "").q_min, s.q_min);
 }
@@ -115,19 +116,19 @@ TEST(SizingCli, MissingOrUnusableReferenceIsRefusedWithExit2NamingTheFile) {
   std::string log;
   ASSERT_EQ(testing::run(cli() + " convert " + testing::geo_path("washer.geo") + " " + w, &log), 0)
       << log;
-  EXPECT_EQ(testing::run(cli() + " optimize " + w + " --sizing " + dir + "/nope.msh -o " + dir +
-                             "/o.msh",
-                         &log),
-            2)
+  EXPECT_EQ(
+      testing::run(cli() + " optimize " + w + " --sizing " + dir + "/nope.msh -o " + dir + "/o.msh",
+                   &log),
+      2)
       << log;
   EXPECT_NE(log.find("nope.msh"), std::string::npos) << log;
   EXPECT_FALSE(std::filesystem::exists(dir + "/o.msh"));
   // A 3D reference for a 2D mesh.
-  EXPECT_EQ(testing::run(cli() + " optimize " + w + " --sizing " +
-                             testing::geo_path("cube_sphere.geo") +
-                             " --set h=0.3 -o " + dir + "/o.msh",
-                         &log),
-            2)
+  EXPECT_EQ(
+      testing::run(cli() + " optimize " + w + " --sizing " + testing::geo_path("cube_sphere.geo") +
+                       " --set h=0.3 -o " + dir + "/o.msh",
+                   &log),
+      2)
       << log;
   EXPECT_NE(log.find("3D"), std::string::npos) << log;
   EXPECT_FALSE(std::filesystem::exists(dir + "/o.msh"));
@@ -161,8 +162,7 @@ TEST(RegionsCli, OnlyTheSelectedVolumeChangesAndItImproves) {
   const std::string in = dir + "/in.msh";
   std::string log;
   ASSERT_EQ(testing::run(cli() + " mesh " + testing::geo_path("cube_sphere.geo") +
-                             " --set h=0.14 --set h_ball=0.1 --set two_regions=1 -o " +
-                             in,
+                             " --set h=0.14 --set h_ball=0.1 --set two_regions=1 -o " + in,
                          &log),
             0)
       << log;
@@ -175,8 +175,8 @@ TEST(RegionsCli, OnlyTheSelectedVolumeChangesAndItImproves) {
                                                " --regions " + std::to_string(tag["ball"])};
   for (const std::string& sel : selections) {
     const std::string out = dir + "/out.msh";
-    ASSERT_EQ(testing::run(cli() + " optimize " + in + sel + " --max-iterations 10 -o " + out, &log),
-              0)
+    ASSERT_EQ(
+        testing::run(cli() + " optimize " + in + sel + " --max-iterations 10 -o " + out, &log), 0)
         << log;
     const TetMesh b = read_mesh(out).tet;
     const RegionContent fa = region_content(a, tag["fluid"]), fb = region_content(b, tag["fluid"]);
@@ -205,8 +205,7 @@ TEST(RegionsCli, UnknownVolumeOrGroupIsRefusedWithExit2ListingTheAvailableOnes) 
                          &log),
             0)
       << log;
-  EXPECT_EQ(testing::run(cli() + " optimize " + in + " --regions 99 -o " + dir + "/o.msh", &log),
-            2)
+  EXPECT_EQ(testing::run(cli() + " optimize " + in + " --regions 99 -o " + dir + "/o.msh", &log), 2)
       << log;
   EXPECT_NE(log.find("99"), std::string::npos) << log;
   std::set<int> volumes;
