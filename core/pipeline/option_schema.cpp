@@ -379,8 +379,9 @@ void validate(const OptimizeOptions& o, int dim) {
         const MeshData* ref = o.sizing_reference.get();
         if (!ref)
           refuse(s, "'" + v + "'",
-                 "a reference file must be read by the front end (core/io/"
-                 "read_sizing_reference.h) into sizing_reference");
+                 "a reference file is read by the CLI (optimize, compare) only; here use "
+                 "mesh, uniform or function (C++: read_sizing_reference into "
+                 "sizing_reference)");
         if (dim != 0 && ref->dim != dim)
           refuse(s, "'" + v + "'",
                  "the reference is a " + std::to_string(ref->dim) + "D mesh; this mesh is " +
