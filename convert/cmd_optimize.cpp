@@ -50,6 +50,12 @@ void register_optimize(CLI::App& app) {
          const bool quiet = global_opts().quiet;
          // The progress lines (convert/progress_display.h): the one place they are drawn.
          auto progress = std::make_shared<ProgressDisplay>(ProgressDisplay::for_stderr());
+         // On an error, the line being drawn is cleared before the message (the callback below
+         // keeps the display alive past this scope).
+         struct EndProgress {
+           std::shared_ptr<ProgressDisplay> p;
+           ~EndProgress() { p->finish(); }
+         } end_progress{progress};
          // A bad value or reference fails before the (possibly long) read of the input.
          if (sizing_is_path(*opt)) progress->begin("reading", "sizing reference " + opt->sizing);
          load_sizing_reference(*opt, *in);
@@ -76,7 +82,7 @@ void register_optimize(CLI::App& app) {
          opt->progress = nullptr;
          progress->begin("writing", out->path);
          write_mesh(d, out->path, out->to_write_options(d, in->path));
-         progress->finish();
+         progress->done();
          QualityTable t;
          QualityStats before = r.before, after = r.after;
          before.label = "input";

@@ -81,8 +81,24 @@ void ProgressDisplay::begin(const std::string& phase, const std::string& detail)
   show(true);
 }
 
+void ProgressDisplay::flush_pending() {
+  std::fputs(pending_.c_str(), out_);
+  std::fflush(out_);
+  pending_.clear();
+}
+
+void ProgressDisplay::done() {
+  finish();
+  core_started_ = true;
+  if (!pending_.empty()) flush_pending();
+}
+
 void ProgressDisplay::update(const OptimizeProgress& p) {
   if (mode_ == Mode::kQuiet) return;
+  if (!core_started_) {
+    core_started_ = true;
+    if (!pending_.empty()) flush_pending();
+  }
   const std::string name = phase_name(p.phase);
   if (name != phase_) begin(name, "");
   if (p.start) return;
@@ -163,18 +179,28 @@ void ProgressDisplay::show(bool force) {
 void ProgressDisplay::finish() {
   if (phase_.empty() || mode_ == Mode::kQuiet) return;
   const double s = seconds_between(start_, std::chrono::steady_clock::now());
+  if (std::uncaught_exceptions() > 0) {
+    // Unwinding: an error ends the run, and its message is the one line on stderr (docs/cli.md).
+    if (drawn_) std::fprintf(out_, "\r\033[K");
+    std::fflush(out_);
+    drawn_ = false;
+    phase_.clear();
+    return;
+  }
   if (!verbose_) {
     phase_ended_ = true;  // the kept line has no ETA
     std::string l = line();
     phase_ended_ = false;
     if (mode_ == Mode::kTerminal && !has_last_) l.resize(l.size() - 4);  // drop " ..."
-    // Unwinding (an error ends the run): the message that follows says why.
-    l += std::uncaught_exceptions() > 0 ? std::string("  (stopped)")
-                                        : "  (" + duration_text(s) + ")";
-    if (mode_ == Mode::kTerminal)
+    l += "  (" + duration_text(s) + ")";
+    if (mode_ == Mode::kTerminal) {
       std::fprintf(out_, "\r\033[K%s\n", l.c_str());
-    else
-      std::fprintf(out_, "%s\n", l.c_str());
+    } else {
+      // Plain lines wait until the core has started: a run refused before (a bad input, an
+      // output that cannot be written) prints its error alone, one line (docs/cli.md).
+      pending_ += l + "\n";
+      if (core_started_) flush_pending();
+    }
     std::fflush(out_);
   }
   drawn_ = false;

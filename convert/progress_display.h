@@ -4,7 +4,8 @@
 // checks, writing.
 //   terminal (stderr is a TTY): the phase's line is redrawn in place ("\r" + clear to the end of
 //                               the line) as it progresses, and kept with its time when it ends;
-//   plain (a file or a pipe):   one line per phase when it ends;
+//   plain (a file or a pipe):   one line per phase when it ends (held until the core reports, so
+//                               that a run refused before prints only its error);
 //   verbose (-v):               every report on a line of its own, with the Lloyd internals;
 //   quiet (-q):                 nothing.
 #pragma once
@@ -35,9 +36,12 @@ class ProgressDisplay {
   void update(const OptimizeProgress& p);
   // Ends the current phase's line (its last state and its time).
   void finish();
+  // The run has succeeded: ends the current phase and prints the lines still held.
+  void done();
 
  private:
   void show(bool force);
+  void flush_pending();
   std::string line() const;
 
   Mode mode_;
@@ -50,7 +54,9 @@ class ProgressDisplay {
   std::vector<std::pair<double, double>> history_;
   OptimizeProgress last_;
   bool has_last_ = false;
-  bool phase_ended_ = false;  // finish() is drawing the line that stays
+  bool phase_ended_ = false;   // finish() is drawing the line that stays
+  bool core_started_ = false;  // the core has reported (plain lines are no longer held)
+  std::string pending_;        // plain: finished lines held until the core has started
 };
 
 // The ETA of a Lloyd-type phase, in seconds (negative: unknown): the iterations left until D
