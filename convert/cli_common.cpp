@@ -7,6 +7,8 @@
 #include "convert/json_report.h"
 #include "core/io/atomic_file.h"
 #include "core/io/read_msh_format.h"
+#include "core/io/read_sizing_reference.h"
+#include "core/pipeline/option_schema.h"
 #include "core/util/error.h"
 #include "core/quality/quality_fields.h"
 
@@ -67,6 +69,13 @@ ReadOptions InputOpts::to_read_options() const {
     r.set_strings.push_back({s.substr(0, eq), s.substr(eq + 1)});
   }
   return r;
+}
+
+void load_sizing_reference(OptimizeOptions& o, const InputOpts& in) {
+  if (!sizing_is_path(o)) return;
+  ReadOptions ro;
+  ro.allow_system_calls = in.allow_system_calls;
+  o.sizing_reference = read_sizing_reference(o.sizing, in.dim, ro);
 }
 
 void add_input(CLI::App* c, InputOpts& in) {

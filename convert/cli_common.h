@@ -9,6 +9,7 @@
 
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
+#include "core/pipeline/optimize.h"
 #include "core/quality/fe_measures.h"
 #include "core/quality/quality_table.h"
 
@@ -54,6 +55,11 @@ struct InputOpts {
   ReadOptions to_read_options() const;
 };
 void add_input(CLI::App* c, InputOpts& in);
+
+// --sizing FILE: reads the reference mesh into o.sizing_reference (a .geo is meshed by Gmsh);
+// nothing for a sizing keyword. Call before the input is read (a .geo reference is a Gmsh model
+// of its own). InputError naming the file (exit 2) if it cannot be read.
+void load_sizing_reference(OptimizeOptions& o, const InputOpts& in);
 
 // Options of the subcommands that write a mesh.
 struct OutputOpts {

@@ -118,6 +118,7 @@ void register_compare(CLI::App& app) {
              throw OutputError("cannot create the directory '" + co->save_dir +
                                "': " + ec.message());
          }
+         load_sizing_reference(*opt, *in);
          const auto t0 = std::chrono::steady_clock::now();
          const MeshData init = read_mesh(in->path, init_read_options(*in));
          const double mesh_seconds = seconds_since(t0);

@@ -6,6 +6,7 @@
 
 #include "convert/cli_common.h"
 #include "convert/json_report.h"
+#include "convert/progress_display.h"
 #include "convert/schema_cli.h"
 #include "core/io/gmsh_cad_boundary.h"
 #include "core/io/gmsh_session.h"
@@ -46,41 +47,42 @@ void register_optimize(CLI::App& app) {
       "input's (default: fall back to the polish alone, or keep the input)");
   commands().push_back(
       {c, [in, out, opt, strict, report, format] {
-         const bool quiet = global_opts().quiet, verbose = global_opts().verbose;
-         validate(*opt, 0);  // a bad value fails before the (possibly long) read
+         const bool quiet = global_opts().quiet;
+         // The progress lines (convert/progress_display.h): the one place they are drawn.
+         auto progress = std::make_shared<ProgressDisplay>(ProgressDisplay::for_stderr());
+         // On an error, the line being drawn is cleared before the message (the callback below
+         // keeps the display alive past this scope).
+         struct EndProgress {
+           std::shared_ptr<ProgressDisplay> p;
+           ~EndProgress() { p->finish(); }
+         } end_progress{progress};
+         // A bad value or reference fails before the (possibly long) read of the input.
+         if (sizing_is_path(*opt)) progress->begin("reading", "sizing reference " + opt->sizing);
+         load_sizing_reference(*opt, *in);
+         validate(*opt, 0);
          // A model Gmsh meshes here (.geo, .step, .brep, ...) keeps its CAD while this session
          // lives: a free boundary then moves on the CAD entities themselves (a .msh or a surface
          // file has none: the discrete geometry of the input).
          std::optional<GmshSession> cad;
-         if (!opt->fix_boundary && read_mesh_meshes_a_model(in->path)) {
+         const bool model = read_mesh_meshes_a_model(in->path);
+         if (!opt->fix_boundary && model) {
            cad.emplace();
            opt->boundary_model = make_gmsh_cad_boundary_if_cad;
          }
+         progress->begin(model ? "meshing" : "reading", in->path);
          MeshData d = read_mesh(in->path, in->to_read_options());
+         progress->finish();
          // A bad output location fails now, not after the optimization.
          check_can_write(out->path, out->to_write_options(d, in->path));
          if (!report->empty()) check_directory_writable(*report);
-         if (!quiet)
-           opt->progress = [verbose](const OptimizeProgress& p) {
-             std::fprintf(stderr, "%-9s it %4d%s D %.3e  energy %.6e  Q_min %.4f  Q_avg %.4f",
-                          p.phase.c_str(), p.iteration, p.restarted ? "*" : " ", p.D, p.energy,
-                          p.q_min, p.q_avg);
-             if (verbose && p.nb_dual_cells + p.nb_clipped_cells > 0) {
-               std::fprintf(stderr,
-                            "  [cells %.2fs (%d dual, %d clipped), Delaunay %.2fs (%s%d flips",
-                            p.seconds_cells, p.nb_dual_cells, p.nb_clipped_cells,
-                            p.seconds_delaunay, p.rebuilt ? "rebuilt, " : "", p.nb_flips);
-               if (p.nb_stuck_faces + p.nb_short_moves > 0)
-                 std::fprintf(stderr, ", %d faces not Delaunay, %d moves short", p.nb_stuck_faces,
-                              p.nb_short_moves);
-               std::fprintf(stderr, "), %.2fs]", p.seconds_other);
-             }
-             std::fprintf(stderr, "\n");
-           };
+         opt->progress = [progress](const OptimizeProgress& p) { progress->update(p); };
          const OptimizeResult r = optimize(d, *opt);
          cad.reset();  // the writer starts from a clean Gmsh
          opt->boundary_model = nullptr;
+         opt->progress = nullptr;
+         progress->begin("writing", out->path);
          write_mesh(d, out->path, out->to_write_options(d, in->path));
+         progress->done();
          QualityTable t;
          QualityStats before = r.before, after = r.after;
          before.label = "input";

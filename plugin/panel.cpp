@@ -232,6 +232,7 @@ std::string summary(const GmshOptimizeResult& r) {
 }
 
 std::string progress_text(const OptimizeProgress& p, int max_iterations) {
+  if (p.start) return "cvtmesh: " + p.phase + "...";  // a phase begins: no figures yet
   char buf[200];
   std::snprintf(buf, sizeof buf, "cvtmesh: %s iteration %d/%d, Q avg %.4f, Q min %.4f",
                 p.phase.c_str(), p.iteration, max_iterations, p.q_avg, p.q_min);

@@ -53,6 +53,7 @@ GmshOptimizeOptions options_from(const py::kwargs& kwargs) {
       o.optimize.progress = [progress](const OptimizeProgress& p) {
         py::dict d;
         d["phase"] = p.phase;
+        d["start"] = p.start;
         d["iteration"] = p.iteration;
         d["D"] = p.D;
         d["energy"] = p.energy;
@@ -86,7 +87,7 @@ std::string optimize_doc() {
       "  dim: 2 or 3 (default -1: the highest meshed dimension)\n"
       "  generate: mesh the model first if it has no mesh (default False)\n"
       "  quality_views: add per-element views Q, radius ratio, min angle (default False)\n"
-      "  progress: called with a dict (phase, iteration, D, energy, q_min, q_avg)\n\n"
+      "  progress: called with a dict (phase, start, iteration, D, energy, q_min, q_avg)\n\n"
       "Options (checked by the core; a bad value raises cvtmesh.InputError):\n";
   for (const OptionSpec& s : option_schema())
     if (s.fronts & kPython) d += "  " + s.name + ": " + describe(s) + "\n";

@@ -29,6 +29,44 @@ double mean_boundary_edge(const TriMesh2& m) {
   return n ? sum / static_cast<double>(n) : 1.0;
 }
 
+// A vertex's mean edge length varies by some percent from vertex to vertex even where the mesh
+// follows a smooth size: `passes` Jacobi passes average each interior vertex's size with its
+// neighbours'. A vertex on a constrained edge takes the mean of its constrained edges instead
+// (the boundary's spacing, which a smoothing pass would bias towards the interior's sizes).
+void smooth_vertex_sizes(const TriMesh2& bg, int passes, std::vector<double>& h) {
+  const int nv = bg.nb_vertices();
+  std::vector<double> bsum(nv, 0);
+  std::vector<int> bcnt(nv, 0);
+  for (int e = 0; e < bg.nb_edges(); ++e) {
+    const int a = bg.edges[2 * e], b = bg.edges[2 * e + 1];
+    const double l = dist(bg.point(a), bg.point(b));
+    bsum[a] += l, bsum[b] += l, ++bcnt[a], ++bcnt[b];
+  }
+  for (int v = 0; v < nv; ++v)
+    if (bcnt[v]) h[v] = bsum[v] / bcnt[v];
+  std::vector<std::pair<int, int>> nb;  // (vertex, neighbour), each edge both ways
+  for (int t = 0; t < bg.nb_tris(); ++t) {
+    const int* tv = &bg.tris[3 * t];
+    if (tv[0] < 0) continue;
+    for (int k = 0; k < 3; ++k) {
+      nb.push_back({tv[k], tv[(k + 1) % 3]});
+      nb.push_back({tv[(k + 1) % 3], tv[k]});
+    }
+  }
+  std::sort(nb.begin(), nb.end());
+  nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+  std::vector<double> next(nv), sum(nv);
+  std::vector<int> cnt(nv);
+  for (int p = 0; p < passes; ++p) {
+    std::fill(sum.begin(), sum.end(), 0.0);
+    std::fill(cnt.begin(), cnt.end(), 0);
+    for (const auto& [v, w] : nb) sum[v] += h[w], ++cnt[v];
+    for (int v = 0; v < nv; ++v)
+      next[v] = bcnt[v] || !cnt[v] ? h[v] : 0.5 * h[v] + 0.5 * sum[v] / cnt[v];
+    h.swap(next);
+  }
+}
+
 }  // namespace
 
 SizingField2d::SizingField2d(const TriMesh2& mesh, const SizingField2dOptions& o) {
@@ -66,6 +104,7 @@ SizingField2d::SizingField2d(const TriMesh2& mesh, const SizingField2dOptions& o
   if (bg_tris_.empty()) throw InputError("sizing from a mesh: the mesh has no triangles");
   bg_h_.resize(nv);
   for (int v = 0; v < nv; ++v) bg_h_[v] = cnt[v] ? sum[v] / cnt[v] : 0;
+  if (o.smoothing_passes > 0) smooth_vertex_sizes(bg, o.smoothing_passes, bg_h_);
   // Bucket grid of about one triangle per cell.
   const int nt = static_cast<int>(bg_tris_.size() / 3);
   double hi[2] = {-std::numeric_limits<double>::infinity(),

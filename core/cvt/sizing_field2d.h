@@ -18,6 +18,9 @@ struct SizingField2dOptions {
   std::function<double(const double* x)> function;  // "function": x = (x, y); must be > 0
   // "mesh": the background mesh; nullptr = the mesh given to the constructor (as it is then).
   const TriMesh2* background = nullptr;
+  // "mesh": Jacobi passes smoothing the background's vertex sizes (0: none); the vertices on
+  // constrained edges then take their constrained edges' mean length.
+  int smoothing_passes = 0;
 };
 
 class SizingField2d {

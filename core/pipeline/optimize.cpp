@@ -24,7 +24,10 @@
 #include "core/pipeline/verify_mesh.h"
 #include "core/geometry/round_coordinates.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/extract_regions.h"
+#include "core/mesh/merge_regions.h"
 #include "core/mesh/pin_vertices.h"
+#include "core/pipeline/select_regions.h"
 #include "core/pipeline/find_structural_defects.h"
 #include "core/quality/worse_than.h"
 #include "core/quality/quality_stats.h"
@@ -35,6 +38,9 @@ namespace cvtmesh {
 namespace {
 
 std::shared_ptr<const SizingField3> sizing3(const TetMesh& mesh, const OptimizeOptions& o) {
+  if (sizing_is_path(o) && o.sizing_reference)  // validate() checked its dimension
+    return std::shared_ptr<const SizingField3>(
+        make_mesh_sizing3(o.sizing_reference->tet).release());
   if (o.sizing == "mesh")
     return std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
   if (o.sizing == "uniform")
@@ -47,6 +53,15 @@ std::shared_ptr<const SizingField3> sizing3(const TetMesh& mesh, const OptimizeO
   }
   throw std::invalid_argument("unknown sizing '" + o.sizing +
                               "' (expected mesh, uniform or function)");
+}
+
+// A phase begins (OptimizeProgress::start).
+void report_start(const OptimizeOptions& o, const std::string& phase) {
+  if (!o.progress) return;
+  OptimizeProgress p;
+  p.phase = phase;
+  p.start = true;
+  o.progress(p);
 }
 
 void report(const OptimizeOptions& o, const std::string& phase, int it, double D, double energy,
@@ -77,7 +92,11 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
     r.lloyd_energy.push_back(s.energy);
-    if (o.progress) o.progress(lloyd_progress(s, "lloyd", quality_stats(mesh, "")));
+    if (!o.progress) return;
+    OptimizeProgress p = lloyd_progress(s, "lloyd", quality_stats(mesh, ""));
+    p.max_iterations = o.max_iterations;
+    p.tolerance = o.tolerance;
+    o.progress(p);
   });
   r.seconds_lloyd = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.iterations = lr.iterations;
@@ -89,6 +108,7 @@ void run_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   SwapOptions so;
   so.measure = Measure::kQ;
   so.quality_threshold = o.swap_below;
+  report_start(o, "swap");
   const SwapStats st = swap_slivers(mesh, so);
   r.iterations += st.passes;
   r.converged = true;
@@ -110,6 +130,7 @@ void run_cvdt_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) 
 void run_combined3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   CombinedOptions co;
   co.max_iterations = o.max_iterations;
+  report_start(o, "combined");
   const CombinedStats st = combined_optimize(
       mesh, co, [&](int it, const QualityStats& s) { report(o, "combined", it, 0, 0, s); });
   r.iterations = st.iterations;
@@ -145,6 +166,7 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
     co.swap.measure = Measure::kTimeStep;
     co.swap.quality_threshold = std::numeric_limits<double>::infinity();
   }
+  report_start(o, "smooth");
   const CombinedStats st = combined_optimize(
       mesh, co, [&](int it, const QualityStats& s) { report(o, "smooth", it, 0, 0, s); });
   r.iterations = st.iterations;
@@ -152,6 +174,7 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
   if (o.polish_repair) {
     // Not under the time-step guard: refusing the insertion of a vertex into a locked sliver
     // (which makes small tets) kept a Q 0.05 tet at ~100k tets (Q_min 0.050 instead of 0.512).
+    report_start(o, "repair");
     repair_slivers(mesh, RepairOptions{});
     if (o.progress) report(o, "repair", 1, 0, 0, quality_stats(mesh, ""));
   }
@@ -232,6 +255,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, const B
     bl.hausdorff = tol;
     bl.volume_budget = &budget;
     const auto sizing = sizing3(mesh, o);
+    report_start(o, "bnd-cvt");
     const BoundaryLloydStats st = boundary_lloyd(mesh, b, *sizing, bl);
     for (std::size_t i = 0; i + 1 < st.energy.size(); ++i)
       report(o, "bnd-cvt", static_cast<int>(i), 0, st.energy[i], QualityStats{});
@@ -356,6 +380,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
                            " is flat or inverted once its coordinates are written with " +
                            std::to_string(o.output_digits) + " digits");
   }
+  if (o.verify) report_start(o, "verify");
   if (!free_boundary) {
     if (o.verify) verify_optimized(input, mesh);
     return mesh;
@@ -432,6 +457,34 @@ OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& optio
   return r;
 }
 
+// 3D, options.regions / physical given: the selected volumes alone, as a mesh of their own whose
+// boundary (the interface with the other volumes included) is fixed, put back into data.
+OptimizeResult optimize_selection(MeshData& data, const OptimizeOptions& options) {
+  const std::vector<int> tags = select_regions(data.tet, options.regions, options.physical);
+  if (tags.empty())
+    throw OptionError("physical", "'" + options.physical + "'",
+                      "invalid value '" + options.physical +
+                          "' for option physical (--physical): the group has no tetrahedra");
+  const RegionSubmesh x = extract_regions(data.tet, tags);
+  MeshData sub;
+  sub.dim = 3;
+  sub.tet = x.mesh;
+  OptimizeOptions so = options;
+  so.regions.clear();
+  so.physical.clear();
+  so.fix_boundary = true;
+  OptimizeResult r = optimize(sub, so);
+  merge_regions(data.tet, x, sub.tet);
+  std::string list;
+  for (int t : tags) list += (list.empty() ? "" : ", ") + std::to_string(t);
+  r.notes.insert(r.notes.begin(), "only volume" + std::string(tags.size() > 1 ? "s " : " ") + list +
+                                      " optimized (" + std::to_string(sub.tet.nb_tets()) +
+                                      " tets); the other volumes kept exactly, "
+                                      "the selection's boundary fixed (" +
+                                      std::to_string(x.nb_interface) + " interface vertices)");
+  return r;
+}
+
 }  // namespace
 
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
@@ -441,6 +494,8 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   // back on return.
   const ThreadCountScope threads;
   if (data.dim == 2) return optimize_2d_no_worse(data.tri, options);
+  if (!options.regions.empty() || !options.physical.empty())
+    return optimize_selection(data, options);
   const OptimizeOptions o = resolve(options, 3);
   OptimizeResult r;
   const auto t0 = std::chrono::steady_clock::now();

@@ -5,6 +5,7 @@
 #pragma once
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,14 @@
 namespace cvtmesh {
 
 struct OptimizeProgress {
-  std::string phase;  // "lloyd", "hop N" (2D basin hopping), "swap", "smooth", "combined", ...
+  // "lloyd", "hop N" (2D basin hopping), "swap", "smooth" (the polish), "repair", "bnd-cvt",
+  // "combined", "dl", "wdl", "verify".
+  std::string phase;
+  // The phase begins (a long one: SWAP, the polish, the final checks): no figures yet. The
+  // figures of a phase come in reports without it (Lloyd: one per iteration).
+  bool start = false;
+  int max_iterations = 0;  // Lloyd-type phases: the iteration cap (0 if none)
+  double tolerance = 0;    // Lloyd-type phases: the D below which it stops (0 if none)
   int iteration = 0;
   double D = 0;       // Lloyd displacement (normalised), 0 if not applicable
   double energy = 0;  // CVT energy, 0 if not applicable
@@ -49,9 +57,14 @@ struct OptimizeOptions {
   // default: L-BFGS(5) in 3D (fewest iterations, best quality measured), Lloyd in 2D.
   int lbfgs_memory = -1;
   // Sizing field H for the density rho = 1/H^(d+2): "mesh" (the input's local edge length,
-  // keeps the user's grading), "uniform" (constant), or "function" (size_function below).
+  // keeps the user's grading; for a model Gmsh meshed from a .geo that is the model's own mesh
+  // sizes), "uniform" (constant), "function" (size_function below), or the path of a reference
+  // file (a mesh, or a model Gmsh meshes: a .geo): the local edge length of sizing_reference.
   std::string sizing = "mesh";
   std::function<double(const double* x)> size_function;  // x has d coordinates
+  // sizing = a path: that file's mesh, read by the front end (core/io/read_sizing_reference.h),
+  // of the dimension of the mesh optimized. Used as a frozen background mesh.
+  std::shared_ptr<const MeshData> sizing_reference;
   // The smooth polish's dihedral flips may lower a tet's Q, but never below min(its old
   // minimum, this floor).
   double polish_q_floor = 0.4;
@@ -105,6 +118,12 @@ struct OptimizeOptions {
   // geometry = the input's own boundary triangulation (make_discrete_boundary); the front ends
   // with the CAD loaded pass make_gmsh_cad_boundary_if_cad (core/io/gmsh_cad_boundary.h).
   std::function<BoundaryModel(const TetMesh&, const BoundaryModelOptions&)> boundary_model;
+  // Selection (3D): optimize only these volumes, by entity tags ("1,3") and/or a volume physical
+  // group's name; "" = not given (both empty: every volume). The other volumes' vertices and tets
+  // are kept exactly, and the selection's boundary, the interface with them included, is fixed
+  // (core/pipeline/select_regions.h, core/mesh/extract_regions.h).
+  std::string regions;
+  std::string physical;
   unsigned seed = 0;
   bool verify = true;  // run the invariant checks at the end (throws InvariantError)
   // Never worse than the input: if the method's result has a lower Q_min or minimum angle

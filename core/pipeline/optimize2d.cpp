@@ -27,6 +27,14 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& given) {
   SizingField2dOptions sizing;
   sizing.kind = options.sizing;
   sizing.function = options.size_function;
+  if (sizing_is_path(options)) {  // validate() checked that a 2D reference was read
+    sizing.kind = "mesh";
+    sizing.background = &options.sizing_reference->tri;
+    // A mesh's vertex sizes are noisy where it follows a smooth size field: smoothed (20 passes:
+    // on the washer from ClusPert, 0 passes ended at Q_min 0.832 fully converged, 20 at 0.880;
+    // docs/reproduction-2d.md, "The washer through the CLI").
+    sizing.smoothing_passes = 20;
+  }
   LloydOptions loop;
   loop.max_iterations = options.max_iterations;
   loop.tolerance = options.tolerance;
@@ -34,8 +42,11 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& given) {
   std::function<void(const LloydStep&)> progress;
   if (options.progress)
     progress = [&](const LloydStep& s) {
-      options.progress(lloyd_progress(s, s.hop > 0 ? "hop " + std::to_string(s.hop) : phase,
-                                      quality_stats(mesh, "")));
+      OptimizeProgress p = lloyd_progress(s, s.hop > 0 ? "hop " + std::to_string(s.hop) : phase,
+                                          quality_stats(mesh, ""));
+      p.max_iterations = options.max_iterations;
+      p.tolerance = options.tolerance;
+      options.progress(p);
     };
 
   LloydResult lr;
@@ -56,6 +67,12 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& given) {
     so.loop = loop;
     so.sizing = sizing;
     lr = phase == "dl" ? dl_optimize_2d(mesh, so, progress) : wdl_optimize_2d(mesh, so, progress);
+  }
+  if (options.verify && options.progress) {
+    OptimizeProgress p;
+    p.phase = "verify";
+    p.start = true;
+    options.progress(p);
   }
   if (options.verify) verify_optimized(input, mesh);
   r.after = quality_stats(mesh, method);

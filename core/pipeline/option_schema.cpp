@@ -7,6 +7,7 @@
 
 #include "core/pipeline/method_registry.h"
 #include "core/pipeline/optimize.h"
+#include "core/pipeline/select_regions.h"
 
 namespace cvtmesh {
 namespace {
@@ -69,9 +70,36 @@ std::vector<OptionSpec> make_schema() {
     s.field = &O::sizing;
     s.fronts = kAllFronts;
     s.choices = {"mesh", "uniform", "function"};
+    s.or_path = true;
     s.help =
         "sizing field H of the density 1/H^(d+2): mesh (the input's local edge length, "
-        "keeps its grading), uniform, or function (C++: size_function)";
+        "keeps its grading; for a .geo input the model's own mesh sizes), uniform, function "
+        "(C++: size_function), or a FILE: a reference mesh's local edge length (a .geo is "
+        "meshed by Gmsh first: the model's own sizes)";
+    v.push_back(s);
+  }
+  {
+    OptionSpec s;
+    s.name = "regions";
+    s.flag = "--regions";
+    s.field = &O::regions;
+    s.dims = kDim3;
+    s.fronts = kCli | kPython;
+    s.help =
+        "optimize only these volumes (entity tags, e.g. 1,3; '' = every volume): the others are "
+        "kept exactly, the selection's boundary and interfaces fixed";
+    v.push_back(s);
+  }
+  {
+    OptionSpec s;
+    s.name = "physical";
+    s.flag = "--physical";
+    s.field = &O::physical;
+    s.dims = kDim3;
+    s.fronts = kCli | kPython;
+    s.help =
+        "optimize only the volumes of the physical group of this name (with --regions: both); "
+        "the others are kept exactly, the selection's boundary and interfaces fixed";
     v.push_back(s);
   }
   v.push_back(number("relaxation", "--relaxation", &O::relaxation, 0.05, 1.95,
@@ -209,9 +237,10 @@ bool is_integral(const OptionSpec& s) {
 std::string range_text(const OptionSpec& s) {
   if (is_bool(s)) return "true or false";
   if (is_string(s)) {
+    if (s.choices.empty()) return "any text";
     std::string c;
     for (const auto& x : s.choices) c += (c.empty() ? "" : ", ") + x;
-    return "one of " + c;
+    return "one of " + c + (s.or_path ? " or a file" : "");
   }
   std::string r =
       (is_integral(s) ? "an integer in [" : "a number in [") + fmt(s.min) + ", " + fmt(s.max) + "]";
@@ -342,9 +371,22 @@ void validate(const OptimizeOptions& o, int dim) {
     }
     if (is_string(s)) {
       const std::string& v = o.*std::get<std::string OptimizeOptions::*>(s.field);
-      bool ok = s.choices.empty();
+      bool ok = s.choices.empty() || (s.or_path && !v.empty());
       for (const auto& c : s.choices) ok = ok || v == c;
       if (!ok) refuse(s, "'" + v + "'", "expected " + range_text(s));
+      if (s.name == "regions") parse_region_tags(v);  // OptionError if not a list of tags
+      if (s.name == "sizing" && sizing_is_path(o)) {
+        const MeshData* ref = o.sizing_reference.get();
+        if (!ref)
+          refuse(s, "'" + v + "'",
+                 "a reference file is read by the CLI (optimize, compare) only; here use "
+                 "mesh, uniform or function (C++: read_sizing_reference into "
+                 "sizing_reference)");
+        if (dim != 0 && ref->dim != dim)
+          refuse(s, "'" + v + "'",
+                 "the reference is a " + std::to_string(ref->dim) + "D mesh; this mesh is " +
+                     std::to_string(dim) + "D");
+      }
       if (s.name == "sizing" && v == "function" && !o.size_function)
         refuse(s, "'function'", "needs a size_function (C++ API)");
     } else if (!is_bool(s)) {
@@ -358,6 +400,13 @@ void validate(const OptimizeOptions& o, int dim) {
              std::string("a ") + (s.dims == kDim2 ? "2D" : "3D") + " option; this mesh is " +
                  std::to_string(dim) + "D");
   }
+}
+
+bool sizing_is_path(const OptimizeOptions& o) {
+  const OptionSpec* s = find_option("sizing");
+  for (const auto& c : s->choices)
+    if (o.sizing == c) return false;
+  return !o.sizing.empty();
 }
 
 OptimizeOptions resolve(const OptimizeOptions& o, int dim) {

@@ -50,6 +50,9 @@ struct OptionSpec {
   double special = 0;       // numbers: a value outside the range that means "default"
   bool has_special = false;
   std::vector<std::string> choices;  // strings: the allowed values (empty: see validate)
+  // strings: a value other than the choices is the path of a file the front end reads (sizing:
+  // OptimizeOptions::sizing_reference); what it holds is checked by the reader, not here.
+  bool or_path = false;
   std::string help;                  // one sentence, no default or range (added by describe)
 };
 
@@ -75,8 +78,12 @@ std::string describe(const OptionSpec& s);
 
 // Checks every option of o for a mesh of dimension dim (2 or 3; 0: either): types, ranges,
 // choices, the method against the registry, options that do not apply to dim left at their
-// default. Throws OptionError naming the first bad option.
+// default, a sizing path with its reference mesh read (of dimension dim). Throws OptionError
+// naming the first bad option.
 void validate(const OptimizeOptions& o, int dim);
+
+// True if o.sizing names a reference file (not one of the sizing keywords).
+bool sizing_is_path(const OptimizeOptions& o);
 
 // o with the "default" values resolved for dimension dim: an empty method (or the 3D default in
 // 2D) becomes the dimension's default method, lbfgs_memory -1 the dimension's memory.

@@ -50,6 +50,7 @@ TEST(Optimize2d, QuadFromBothPerturbations) {
       o.tolerance = 1e-12;
       int calls = 0;
       o.progress = [&](const OptimizeProgress& p) {
+        if (p.start) return;  // a phase begins (the final checks): not an iteration
         ++calls;
         EXPECT_EQ(p.phase, method == "cvdt" ? "lloyd" : method);
       };
@@ -166,6 +167,7 @@ TEST(Optimize2d, WasherCvtWithBasinHopping) {
   o.seed = 5;
   std::vector<std::string> phases;
   o.progress = [&](const OptimizeProgress& p) {
+    if (p.start) return;  // a phase begins (the final checks): not an iteration
     if (phases.empty() || phases.back() != p.phase) phases.push_back(p.phase);
   };
   const OptimizeResult r = optimize_2d(m, o);

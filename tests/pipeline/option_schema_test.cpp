@@ -77,8 +77,21 @@ TEST(OptionSchema, TheMessageNamesOptionValueAndRange) {
   o.tolerance = std::nan("");
   EXPECT_NE(refusal(o, 3), "");
   o = {};
-  o.sizing = "fancy";
-  EXPECT_NE(refusal(o, 3).find("one of mesh, uniform, function"), std::string::npos);
+  o.sizing = "fancy";  // not a keyword: the path of a reference file, which was not read
+  EXPECT_NE(refusal(o, 3).find("'fancy'"), std::string::npos);
+  EXPECT_NE(refusal(o, 3).find("reference file"), std::string::npos);
+  auto ref = std::make_shared<MeshData>();
+  ref->dim = 2;
+  o.sizing_reference = ref;  // read, but of the other dimension
+  EXPECT_NE(refusal(o, 3).find("the reference is a 2D mesh"), std::string::npos);
+  EXPECT_EQ(refusal(o, 2), "");
+  o = {};
+  o.regions = "1, 3";
+  EXPECT_EQ(refusal(o, 3), "");
+  o.regions = "1,x";
+  EXPECT_NE(refusal(o, 3).find("--regions"), std::string::npos);
+  EXPECT_NE(refusal(o, 2).find("--regions"), std::string::npos);
+  o = {};
   o.sizing = "function";  // needs a size function
   EXPECT_NE(refusal(o, 3).find("size_function"), std::string::npos);
 }

@@ -102,7 +102,7 @@ class InProcessScripting(unittest.TestCase):
         self.assertGreaterEqual(table["iterations"], 1)
         self.assertGreaterEqual(len(progress), 1)  # reported while it ran
         for p in progress:
-            self.assertEqual(set(p), {"phase", "iteration", "D", "energy", "q_min", "q_avg"})
+            self.assertEqual(set(p), {"phase", "start", "iteration", "D", "energy", "q_min", "q_avg"})
         for col in ("before", "after"):
             for row in ("number_of_elements", "q_min", "average_quality", "bad_elements_pct",
                         "min_dihedral_angle", "q_0.7_1.0", "q_0.0_0.3"):

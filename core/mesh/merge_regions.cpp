@@ -1,0 +1,83 @@
+#include "core/mesh/merge_regions.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/mesh/build_adjacency.h"
+#include "core/mesh/face_key.h"
+#include "core/util/error.h"
+
+namespace cvtmesh {
+
+void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) {
+  const int ns = static_cast<int>(x.to_parent.size());
+  // Each vertex of the result: a parent vertex (its tag i + 1) or a new one (tag 0), appended.
+  std::vector<int> to_parent(sub.nb_vertices(), -1);
+  std::vector<char> seen(ns, 0);
+  if (sub.node_tags.size() != static_cast<std::size_t>(sub.nb_vertices()))
+    throw InvariantError("merge_regions: the optimized part lost its vertex tags");
+  for (int v = 0; v < sub.nb_vertices(); ++v) {
+    const std::size_t tag = sub.node_tags[v];
+    if (tag == 0) continue;
+    if (tag > static_cast<std::size_t>(ns) || seen[tag - 1])
+      throw InvariantError("merge_regions: vertex tag " + std::to_string(tag) + " out of place");
+    seen[tag - 1] = 1;
+    to_parent[v] = x.to_parent[tag - 1];
+  }
+  if (std::find(seen.begin(), seen.end(), 0) != seen.end())
+    throw InvariantError("merge_regions: the optimized part lost a vertex");
+  // The parent's vertices take their new positions (their classification stays: the sub's
+  // boundary was kept); the pinned ones (the interface) must not have moved.
+  for (int v = 0; v < sub.nb_vertices(); ++v) {
+    const int p = to_parent[v];
+    if (p >= 0) {
+      const bool pinned = x.mesh.vclass[sub.node_tags[v] - 1].entity < 0;
+      if (pinned && !std::equal(sub.point(v), sub.point(v) + 3, parent.point(p)))
+        throw InvariantError("merge_regions: an interface vertex moved");
+      std::copy(sub.point(v), sub.point(v) + 3, parent.point(p));
+      continue;
+    }
+    to_parent[v] = parent.nb_vertices();
+    parent.xyz.insert(parent.xyz.end(), sub.point(v), sub.point(v) + 3);
+    parent.vclass.push_back(sub.vclass[v]);
+    if (!parent.node_tags.empty()) parent.node_tags.push_back(0);
+  }
+  // Tets: the unselected ones in their order, then the sub's.
+  std::vector<int> tets, region;
+  std::vector<std::size_t> tags;
+  const bool with_tags = !parent.tet_tags.empty();
+  for (int t = 0; t < parent.nb_tets(); ++t) {
+    if (x.selected_tet[t] || parent.tets[4 * t] < 0) continue;
+    tets.insert(tets.end(), &parent.tets[4 * t], &parent.tets[4 * t] + 4);
+    region.push_back(parent.tet_region[t]);
+    if (with_tags) tags.push_back(parent.tet_tags[t]);
+  }
+  for (int t = 0; t < sub.nb_tets(); ++t) {
+    if (sub.tets[4 * t] < 0) continue;
+    for (int k = 0; k < 4; ++k) tets.push_back(to_parent[sub.tets[4 * t + k]]);
+    region.push_back(sub.tet_region[t]);
+    if (with_tags) tags.push_back(t < static_cast<int>(sub.tet_tags.size()) ? sub.tet_tags[t] : 0);
+  }
+  // Triangles: the parent's stay; the sub must carry the same ones (its boundary is kept).
+  std::vector<FaceKey> carried, got;
+  for (int f = 0; f < parent.nb_tris(); ++f)
+    if (x.selected_tri[f])
+      carried.push_back(
+          face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
+  const int added_surface = x.nb_added_faces ? x.mesh.tri_surface.back() : 0;
+  for (int f = 0; f < sub.nb_tris(); ++f) {
+    if (x.nb_added_faces && sub.tri_surface[f] == added_surface) continue;
+    got.push_back(face_key(to_parent[sub.tris[3 * f]], to_parent[sub.tris[3 * f + 1]],
+                           to_parent[sub.tris[3 * f + 2]]));
+  }
+  std::sort(carried.begin(), carried.end());
+  std::sort(got.begin(), got.end());
+  if (carried != got)
+    throw InvariantError("merge_regions: the optimized part changed its boundary triangles");
+  parent.tets = std::move(tets);
+  parent.tet_region = std::move(region);
+  if (with_tags) parent.tet_tags = std::move(tags);
+  build_adjacency(parent);
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,14 @@
+// Puts an optimized submesh (extract_regions) back into its parent: the parent's unselected tets
+// stay as they were, in their order and with their tags, followed by the submesh's tets; the
+// parent's vertices keep their ids (the sub's pinned ones did not move), vertices the
+// optimization added are appended; the parent's triangles stay, the sub's replace those it
+// carried. The sub's node_tags must be those extract_regions set (i + 1; 0 for a new vertex).
+#pragma once
+#include "core/mesh/extract_regions.h"
+
+namespace cvtmesh {
+
+// Throws InvariantError if the sub lost a vertex or moved a pinned one.
+void merge_regions(TetMesh& parent, const RegionSubmesh& extracted, const TetMesh& optimized);
+
+}  // namespace cvtmesh
