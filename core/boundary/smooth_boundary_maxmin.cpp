@@ -7,12 +7,12 @@
 
 #include "core/boundary/boundary_fans.h"
 #include "core/boundary/boundary_move.h"
-#include "core/geometry/min_norm_in_hull.h"
 #include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/vertex_tets.h"
 #include "core/quality/quality.h"
+#include "core/smoothing/maxmin_ascent_step.h"
 
 namespace cvtmesh {
 namespace {
@@ -69,8 +69,6 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
   std::vector<double> fv;
   std::vector<Vec3> fg;
   std::vector<std::pair<double, Vec3>> cand;
-  std::vector<Vec3> active;
-  std::vector<std::pair<double, int>> order;
   for (int pass = 0; pass < o.passes; ++pass) {
     // The boundary vertices of poor elements, worst first.
     std::vector<std::pair<double, int>> todo;
@@ -163,13 +161,15 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
           }
           P[c] = x0;
         }
-        // The entity's tangent space at v: the gradients are projected on it, so that the
-        // common ascent direction of the active functions is one along the entity.
+        // The entity's tangent space at v (the surface's plane, the curve's line): the ascent
+        // direction is taken within it, so that the move is one along the entity.
         const VertexRole role = model.role_of(v);
-        Vec3 axis{0, 0, 0};
+        TangentSpace space;
         if (role.role == BoundaryRole::kSurface) {
-          axis = fan_normal(mesh, fans, v);
+          space.kind = TangentSpace::kPlane;
+          space.axis = fan_normal(mesh, fans, v);
         } else {
+          space.kind = TangentSpace::kLine;
           double best = 0;
           for (int k = 0; k < 3; ++k) {
             double probe[3] = {P[0], P[1], P[2]}, q[3];
@@ -178,16 +178,11 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
             const Vec3 t = sub(q, P);
             if (norm(t) > best) {
               best = norm(t);
-              axis = (1 / best) * t;
+              space.axis = (1 / best) * t;
             }
           }
           if (!(best > 1e-9 * lmin)) break;
         }
-        auto tangential = [&](const Vec3& g) {
-          return role.role == BoundaryRole::kSurface ? g - dot(g, axis) * axis
-                                                     : dot(g, axis) * axis;
-        };
-        for (Vec3& g : fg) g = tangential(g);
         cand.clear();
         double fmin = kInf;
         for (int i = 0; i < n; ++i)
@@ -200,23 +195,11 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
             const double lo = j == 0 ? low[i][0] : low[i][1] / scale;
             if (lo > -kInf) cand.push_back({fv[7 * i + j] - lo + fmin, fg[7 * i + j]});
           }
-        const double band = 1e-3 + 1e-2 * std::fabs(fmin);
-        order.clear();
-        for (int k = 0; k < static_cast<int>(cand.size()); ++k)
-          if (cand[k].first <= fmin + band) order.push_back({cand[k].first, k});
-        std::sort(order.begin(), order.end());
-        if (order.size() > 8) order.resize(8);
-        active.clear();
-        for (const auto& a : order) active.push_back(cand[a.second].second);
-        const Vec3 d = min_norm_in_hull(active);
-        const double slope = norm2(d);
-        if (!(slope > 0)) break;
-        double alpha = 0.2 * lmin / std::sqrt(slope);
-        for (const auto& [value, grad] : cand) {
-          const double sj = dot(grad, d);
-          if (sj < slope && value > fmin + band)
-            alpha = std::min(alpha, (value - fmin) / (slope - sj));
-        }
+        // The common ascent direction within the entity's tangent space.
+        const AscentStep ascent = maxmin_ascent_step(cand, fmin, 0.2 * lmin, space);
+        if (!ascent.ok) break;
+        const Vec3& d = ascent.direction;
+        double alpha = ascent.alpha;
         bool accepted = false;
         const Vec3 here = vec3(P);
         for (int halving = 0; halving <= o.max_halvings && !accepted; ++halving) {

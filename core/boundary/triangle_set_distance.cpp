@@ -30,6 +30,7 @@ K::Point_3 point(const std::vector<double>& xyz, int i) {
 
 struct TriangleSetDistance::Impl {
   Triangles triangles;
+  std::vector<int> index;  // of each triangle in the constructor's tris
   TriTree tree;
 };
 
@@ -38,7 +39,10 @@ TriangleSetDistance::TriangleSetDistance(const std::vector<double>& xyz,
     : impl_(std::make_unique<Impl>()) {
   for (std::size_t f = 0; f + 2 < tris.size(); f += 3) {
     K::Triangle_3 t(point(xyz, tris[f]), point(xyz, tris[f + 1]), point(xyz, tris[f + 2]));
-    if (!t.is_degenerate()) impl_->triangles.push_back(t);
+    if (!t.is_degenerate()) {
+      impl_->triangles.push_back(t);
+      impl_->index.push_back(static_cast<int>(f / 3));
+    }
   }
   if (!impl_->triangles.empty()) {
     impl_->tree.insert(impl_->triangles.begin(), impl_->triangles.end());
@@ -60,6 +64,15 @@ bool TriangleSetDistance::closest(const double* p, double* q) const {
   q[1] = c.y();
   q[2] = c.z();
   return true;
+}
+
+int TriangleSetDistance::closest_triangle(const double* p, double* q) const {
+  if (impl_->triangles.empty()) return -1;
+  const auto [c, id] = impl_->tree.closest_point_and_primitive(K::Point_3(p[0], p[1], p[2]));
+  q[0] = c.x();
+  q[1] = c.y();
+  q[2] = c.z();
+  return impl_->index[static_cast<std::size_t>(id - impl_->triangles.cbegin())];
 }
 
 double TriangleSetDistance::distance(const double* p) const {

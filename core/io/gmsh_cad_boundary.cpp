@@ -38,6 +38,8 @@ class GmshCadGeometry final : public BoundaryGeometry {
   bool closest_on_curve(int c, const double* p, double* q) const override {
     return closest(1, c, p, q);
   }
+  // One getClosestPoint per surface of the model: slow (optimize() measures on the input
+  // triangulation instead, core/pipeline/measure_on_input_boundary.h).
   double distance_to_boundary(const double* p) const override {
     double best = std::numeric_limits<double>::infinity();
     for (int s : surfaces) {

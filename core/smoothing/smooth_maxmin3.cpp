@@ -7,12 +7,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/geometry/min_norm_in_hull.h"
 #include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/vertex_tets.h"
 #include "core/quality/quality.h"
+#include "core/smoothing/maxmin_ascent_step.h"
 
 namespace cvtmesh {
 namespace {
@@ -103,10 +103,8 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
   std::vector<char> done(static_cast<std::size_t>(mesh.nb_vertices()), 0);
   std::vector<std::array<double, kNbFn>> fv;
   std::vector<std::array<Vec3, kNbFn>> fg;
-  std::vector<std::pair<double, int>> order;
   std::vector<std::pair<double, Vec3>> cand;
   const double scale = o.angle_scale > 0 ? o.angle_scale : 60;  // of the angles' functions
-  std::vector<Vec3> active;
   std::vector<double> sq, sa, lowest;
   // The nodal sums of the time-step guard, updated after each accepted vertex.
   VertexTimeSteps dt_steps;
@@ -197,26 +195,11 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
               const double low = j == 0 ? lowest[2 * i] : lowest[2 * i + 1] / scale;
               cand.push_back({fv[i][j] - low + fmin, fg[i][j]});
             }
-          // The active set: the candidates within a small band of the minimum (at most 8).
-          const double band = 1e-3 + 1e-2 * std::fabs(fmin);
-          order.clear();
-          for (int k = 0; k < static_cast<int>(cand.size()); ++k)
-            if (cand[k].first <= fmin + band) order.push_back({cand[k].first, k});
-          std::sort(order.begin(), order.end());
-          if (order.size() > 8) order.resize(8);
-          active.clear();
-          for (const auto& a : order) active.push_back(cand[a.second].second);
-          const Vec3 d = min_norm_in_hull(active);
-          const double slope = norm2(d);
-          if (!(slope > 0)) break;
-          // Step length: where the linearised minimum meets another candidate's linearisation,
-          // at most a fifth of the shortest edge.
-          double alpha = 0.2 * lmin / std::sqrt(slope);
-          for (const auto& [value, grad] : cand) {
-            const double sj = dot(grad, d);
-            if (sj < slope && value > fmin + band)
-              alpha = std::min(alpha, (value - fmin) / (slope - sj));
-          }
+          // The common ascent direction, at most a fifth of the shortest edge.
+          const AscentStep ascent = maxmin_ascent_step(cand, fmin, 0.2 * lmin);
+          if (!ascent.ok) break;
+          const Vec3& d = ascent.direction;
+          double alpha = ascent.alpha;
           bool accepted = false;
           const Vec3 here = vec3(P);
           for (int halving = 0; halving <= o.max_halvings && !accepted; ++halving) {
