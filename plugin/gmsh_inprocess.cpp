@@ -7,6 +7,7 @@
 
 #include "core/quality/quality_fields.h"
 #include "core/io/gmsh_cad_boundary.h"
+#include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/pipeline/option_schema.h"
@@ -83,6 +84,11 @@ MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
     });
     if (have < 0) throw InputError("Gmsh could not mesh " + what);
   }
+  // A model opened from a .msh saved with physical groups lacks the boundary elements of the
+  // surfaces outside every group (and of the interfaces between volumes): restore them, as the
+  // CLI's reader does, so that its boundary is closed. They are added to the current model.
+  gmsh_checked("cannot restore the boundary elements of " + what,
+               [&] { add_missing_facets(options.dim > 0 ? options.dim : have); });
   return mesh_from_gmsh(options.dim, what);
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -226,6 +227,43 @@ TEST_F(GmshInProcess, ModelWithoutMeshIsAnErrorUnlessGenerateIsAsked) {
   const GmshOptimizeResult r = gmsh_optimize(o);
   EXPECT_GT(r.result.after.nb_elements, 0);
   EXPECT_FALSE(nodes(3).empty());
+}
+
+// A .msh saved with physical groups holds only their elements: reopened in a script, the two-region
+// cube_sphere lacks the cube faces (no group). The in-process path restores them as the CLI's
+// reader does, so the model optimizes instead of being refused as "boundary not closed".
+TEST_F(GmshInProcess, ModelOpenedFromAMshWithPhysicalGroupsOnlyOptimizes) {
+  open_cube_sphere(true);
+  std::size_t nb_tris_all = 0;
+  {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, 2);
+    for (const auto& t : tags) nb_tris_all += t.size();
+  }
+  const std::string path = ::testing::TempDir() + "cvtmesh_groups_only_" +
+                           std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                           ".msh";
+  gmsh::option::setNumber("Mesh.SaveAll", 0);
+  gmsh::write(path);
+  gmsh::clear();
+  gmsh::open(path);
+  std::size_t nb_tris_read = 0;
+  {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, 2);
+    for (const auto& t : tags) nb_tris_read += t.size();
+  }
+  ASSERT_LT(nb_tris_read, nb_tris_all);  // the file really lacks the cube's faces
+  GmshOptimizeOptions o;
+  o.optimize.max_iterations = 4;
+  const GmshOptimizeResult r = gmsh_optimize(o);
+  EXPECT_EQ(r.dim, 3);
+  EXPECT_GT(r.result.after.q_min, r.result.before.q_min);
+  const MeshData now = mesh_from_gmsh(3);
+  EXPECT_EQ(quality_stats(now.tet, "now").nb_elements, r.result.after.nb_elements);
+  std::remove(path.c_str());
 }
 
 TEST_F(GmshInProcess, EmptyModelIsAnError) {
