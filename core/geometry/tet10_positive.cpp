@@ -49,19 +49,18 @@ bool tet10_positive(const double* const c[4], const double* const m[6]) {
   const double* const m13 = m[4];
   const double* const m23 = m[5];
   // Bey's refinement (with two children reordered so that all have the parent's orientation).
-  const double* const sub[8][4] = {{c[0], m01, m02, m03}, {m01, c[1], m12, m13},
-                                   {m02, m12, c[2], m23}, {m03, m13, m23, c[3]},
-                                   {m01, m02, m03, m13},  {m01, m02, m13, m12},
-                                   {m02, m03, m13, m23},  {m02, m12, m23, m13}};
+  const double* const sub[8][4] = {
+      {c[0], m01, m02, m03}, {m01, c[1], m12, m13}, {m02, m12, c[2], m23}, {m03, m13, m23, c[3]},
+      {m01, m02, m03, m13},  {m01, m02, m13, m12},  {m02, m03, m13, m23},  {m02, m12, m23, m13}};
   for (const auto& t : sub)
     if (!(orient3d(t[0], t[1], t[2], t[3]) > 0)) return false;
   // The Jacobian's sign in our orientation: for the straight reference tet it is 6 V > 0 with
   // columns x1 - x0, x2 - x0, x3 - x0; orient3d > 0 means (x1-x0).((x2-x0)x(x3-x0)) > 0, the same
   // determinant.
-  static const double kNodes[11][4] = {
-      {1, 0, 0, 0},      {0, 1, 0, 0},       {0, 0, 1, 0},       {0, 0, 0, 1},
-      {.5, .5, 0, 0},    {.5, 0, .5, 0},     {.5, 0, 0, .5},     {0, .5, .5, 0},
-      {0, .5, 0, .5},    {0, 0, .5, .5},     {.25, .25, .25, .25}};
+  static const double kNodes[11][4] = {{1, 0, 0, 0},   {0, 1, 0, 0},        {0, 0, 1, 0},
+                                       {0, 0, 0, 1},   {.5, .5, 0, 0},      {.5, 0, .5, 0},
+                                       {.5, 0, 0, .5}, {0, .5, .5, 0},      {0, .5, 0, .5},
+                                       {0, 0, .5, .5}, {.25, .25, .25, .25}};
   for (const auto& l : kNodes)
     if (!(jacobian(c, m, l) > 0)) return false;
   return true;

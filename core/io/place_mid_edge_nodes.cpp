@@ -44,7 +44,8 @@ MidEdgePlacement place_mid_edge_nodes(const TetMesh& mesh, const MidEdgeProjecto
   // Every edge with the entity of lowest dimension it lies on.
   std::map<Key, VertexClass> edges;
   auto add = [&](int a, int b, int dim, int entity) {
-    auto [it, fresh] = edges.emplace(edge_key(a, b), VertexClass{static_cast<std::int8_t>(dim), entity});
+    auto [it, fresh] =
+        edges.emplace(edge_key(a, b), VertexClass{static_cast<std::int8_t>(dim), entity});
     if (!fresh && dim < it->second.dim) it->second = {static_cast<std::int8_t>(dim), entity};
   };
   for (int t = 0; t < mesh.nb_tets(); ++t) {
@@ -113,7 +114,7 @@ MidEdgePlacement place_mid_edge_nodes(const TetMesh& mesh, const MidEdgeProjecto
   out.tags.assign(ne, 0);
   out.xyz.resize(3 * ne);
   out.where.reserve(ne);
-  std::vector<char> curved(ne, 0);  // not on the straight midpoint
+  std::vector<char> curved(ne, 0);          // not on the straight midpoint
   std::vector<int*> category(ne, nullptr);  // the count it is in
   std::size_t k = 0;
   for (const auto& [key, where] : edges) {
@@ -240,8 +241,8 @@ MidEdgePlacement place_mid_edge_nodes(const TetMesh& mesh, const MidEdgeProjecto
 
 std::string mid_edge_summary(const MidEdgePlacement& p) {
   const std::size_t n = p.tags.size();
-  std::string s = "order-2 mesh: " + std::to_string(n) + " mid-edge nodes: " +
-                  std::to_string(p.nb_kept) + " kept from the input";
+  std::string s = "order-2 mesh: " + std::to_string(n) +
+                  " mid-edge nodes: " + std::to_string(p.nb_kept) + " kept from the input";
   if (p.nb_cad) s += ", " + std::to_string(p.nb_cad) + " projected on the CAD";
   if (p.nb_curved)
     s += ", " + std::to_string(p.nb_curved) + " on the input's curved boundary (offset carried)";

@@ -14,8 +14,7 @@ struct Tet10 {
   std::array<std::array<double, 3>, 6> m;
   void straighten() {
     for (int k = 0; k < 6; ++k)
-      for (int a = 0; a < 3; ++a)
-        m[k][a] = 0.5 * (c[kTet10Edge[k][0]][a] + c[kTet10Edge[k][1]][a]);
+      for (int a = 0; a < 3; ++a) m[k][a] = 0.5 * (c[kTet10Edge[k][0]][a] + c[kTet10Edge[k][1]][a]);
   }
   bool positive() const {
     const double* cc[4] = {c[0].data(), c[1].data(), c[2].data(), c[3].data()};

@@ -177,8 +177,8 @@ TEST(Order2, OccBallMidEdgeBoundaryNodesOnTheSphere) {
       const auto& nd = std::get<3>(e);
       for (int k = 3; k < 6; ++k) {
         const auto p = xyz_of(o, nd[k]);
-        const double r = std::sqrt(std::pow(p[0] - 0.1, 2) + std::pow(p[1] - 0.2, 2) +
-                                   std::pow(p[2] - 0.3, 2));
+        const double r =
+            std::sqrt(std::pow(p[0] - 0.1, 2) + std::pow(p[1] - 0.2, 2) + std::pow(p[2] - 0.3, 2));
         worst = std::max(worst, std::abs(r - 1));
         ++on_surface;
       }
