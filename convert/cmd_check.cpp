@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "convert/cli_common.h"
+#include "core/io/place_mid_edge_nodes.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/find_structural_defects.h"
 
@@ -35,8 +36,20 @@ void register_check(CLI::App& app) {
                               }
                             }
                           }
+                          // Order 2: every tet10 positive as the file places its nodes.
+                          const bool order2 = d.dim == 3 && d.model().high_order.order == 2;
+                          if (order2) {
+                            const MidEdgePlacement p = place_mid_edge_nodes(d.tet, {}, false);
+                            if (p.nb_invalid) {
+                              r.ok = false;
+                              r.problems.push_back(
+                                  std::to_string(p.nb_invalid) +
+                                  " order-2 tetrahedra are not positive with their mid-edge nodes "
+                                  "(a straight sub-tet or the Jacobian at a node is not positive)");
+                            }
+                          }
                           if (r.ok) {
-                            std::cout << in->path << ": ok (" << n
+                            std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "") << n
                                       << (d.dim == 3 ? " tetrahedra" : " triangles") << ", "
                                       << (d.dim == 3 ? d.tet.nb_vertices() : d.tri.nb_vertices())
                                       << " vertices)\n";

@@ -9,6 +9,8 @@
 #include "convert/progress_display.h"
 #include "convert/schema_cli.h"
 #include "core/io/gmsh_cad_boundary.h"
+#include "core/io/gmsh_mid_edge_projector.h"
+#include "core/io/place_mid_edge_nodes.h"
 #include "core/io/gmsh_session.h"
 #include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
@@ -63,11 +65,12 @@ void register_optimize(CLI::App& app) {
          // A model Gmsh meshes here (.geo, .step, .brep, ...) keeps its CAD while this session
          // lives: a free boundary then moves on the CAD entities themselves (a .msh or a surface
          // file has none: the discrete geometry of the input).
+         // An order-2 model's mid-edge nodes are projected on that CAD as well.
          std::optional<GmshSession> cad;
          const bool model = read_mesh_meshes_a_model(in->path);
-         if (!opt->fix_boundary && model) {
+         if (model) {
            cad.emplace();
-           opt->boundary_model = make_gmsh_cad_boundary_if_cad;
+           if (!opt->fix_boundary) opt->boundary_model = make_gmsh_cad_boundary_if_cad;
          }
          progress->begin(model ? "meshing" : "reading", in->path);
          MeshData d = read_mesh(in->path, in->to_read_options());
@@ -76,7 +79,13 @@ void register_optimize(CLI::App& app) {
          check_can_write(out->path, out->to_write_options(d, in->path));
          if (!report->empty()) check_directory_writable(*report);
          opt->progress = [progress](const OptimizeProgress& p) { progress->update(p); };
-         const OptimizeResult r = optimize(d, *opt);
+         OptimizeResult r = optimize(d, *opt);
+         // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.
+         if (d.dim == 3 && d.model().high_order.order == 2) {
+           MidEdgePlacement& p = d.model().high_order.placed;
+           p = place_mid_edge_nodes(d.tet, cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
+           r.notes.push_back(mid_edge_summary(p));
+         }
          cad.reset();  // the writer starts from a clean Gmsh
          opt->boundary_model = nullptr;
          opt->progress = nullptr;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "core/io/gmsh_mid_edge_projector.h"
+#include "core/io/place_mid_edge_nodes.h"
 #include "core/quality/quality_fields.h"
 #include "core/io/gmsh_cad_boundary.h"
 #include "core/io/gmsh_missing_facets.h"
@@ -152,6 +154,12 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
   const FeMeasures fe_before =
       data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe);
   OptimizeResult r = optimize(data, o.optimize);
+  // Order 2: the mid-edge nodes of the optimized corner mesh, on the model's CAD where it has one.
+  if (data.dim == 3 && data.model().high_order.order == 2) {
+    GmshSession session;
+    data.model().high_order.placed = place_mid_edge_nodes(data.tet, gmsh_cad_mid_edge_projector());
+    r.notes.push_back(mid_edge_summary(data.model().high_order.placed));
+  }
   set_fe_measures(r.before, fe_before);
   set_fe_measures(r.after,
                   data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe));

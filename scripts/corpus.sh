@@ -4,8 +4,9 @@
 # in ../shared/data/models/ (referenced in place). For each model and method: `optimize` (with a
 # timeout), then `check` and `stats --format json` on the output. Prints one line per run:
 #   model method exit signal in_Qmin g_Qmin out_Qmin in_avg g_avg out_avg in_mindih g_mindih
-#   out_mindih g_seconds seconds check
-# (out_* read back from the written file; in_* from stats on the input; g_* = Gmsh's own tet
+#   out_mindih g_seconds seconds cpu_seconds check
+# (seconds: wall time of optimize; cpu_seconds: its user + system CPU time, /usr/bin/time;
+# out_* read back from the written file; in_* from stats on the input; g_* = Gmsh's own tet
 # optimizer on the same input mesh, `cvtmesh mesh IN --gmsh-optimize`; NO_GMSH=1 skips it). No exit status of its
 # own beyond the script's failures: it is a survey. The CTest label `corpus` asserts on it.
 #
@@ -60,8 +61,8 @@ try:
 except Exception as e:
   print("- - -")' "$1"
 }
-printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %8s %8s %7s %7s %7s %8s %8s %s\n" model method exit sig \
-  in_Qmin g_Qmin out_Qmin in_avg g_avg out_avg in_dih g_dih out_dih g_sec seconds "check / message"
+printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %8s %8s %7s %7s %7s %8s %8s %8s %s\n" model method exit sig \
+  in_Qmin g_Qmin out_Qmin in_avg g_avg out_avg in_dih g_dih out_dih g_sec seconds cpu_s "check / message"
 for m in "${all[@]}"; do
   in=$(input_of "$m")
   [ -z "$in" ] && { echo "$m: no input" >&2; continue; }
@@ -71,9 +72,13 @@ for m in "${all[@]}"; do
     args=()
     [ "$meth" != default ] && args=(--method "$meth")
     t0=$(date +%s.%N)
-    (cd "$work/tut" && timeout "$timeout_s" "$CVTMESH" optimize "$in" -o "$out" "${args[@]}" -q \
+    (cd "$work/tut" && /usr/bin/time -f "%U %S" -o "$work/$tag.time" \
+      timeout "$timeout_s" "$CVTMESH" optimize "$in" -o "$out" "${args[@]}" -q \
       >"$work/$tag.out" 2>"$work/$tag.err")
     rc=$?
+    # /usr/bin/time reports a non-zero status on its first line ("Command exited with ...").
+    cpu=$(tail -1 "$work/$tag.time" 2>/dev/null | awk '{printf "%.1f", $1 + $2}')
+    cpu=${cpu:--}
     t1=$(date +%s.%N)
     secs=$(python3 -c "print('%.1f' % ($t1 - $t0))")
     sig=-
@@ -122,8 +127,8 @@ print("; ".join(out))' "$work/$tag.err")
     else
       chk=$(grep -v '^\s*$' "$work/$tag.err" | tail -1 | cut -c1-150)
     fi
-    printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %8s %8s %7s %7s %7s %8s %8s %s\n" "$m" "$meth" "$rc" \
-      "$sig" "$iq" "$gq" "$oq" "$ia" "$ga" "$oa" "$id" "$gd" "$od" "$gs" "$secs" "$chk"
+    printf "%-24s %-16s %4s %4s %8s %8s %8s %8s %8s %8s %7s %7s %7s %8s %8s %8s %s\n" "$m" "$meth" "$rc" \
+      "$sig" "$iq" "$gq" "$oq" "$ia" "$ga" "$oa" "$id" "$gd" "$od" "$gs" "$secs" "$cpu" "$chk"
   done
 done
 [ -z "${KEEP:-}" ] && rm -rf "$work"

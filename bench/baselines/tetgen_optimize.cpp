@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/geometry/tetgen_library.h"
+#include "core/delaunay/tetrahedralize_isolated.h"
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/util/error.h"
@@ -14,7 +14,7 @@
 namespace cvtmesh {
 
 void tetgen_optimize(TetMesh& m, const TetgenOptimizeOptions& o) {
-  tetgenio in, out;
+  tetgenio in;
   in.firstnumber = 0;
   in.numberofpoints = m.nb_vertices();
   in.pointlist = new REAL[m.xyz.size()];
@@ -44,38 +44,38 @@ void tetgen_optimize(TetMesh& m, const TetgenOptimizeOptions& o) {
   std::string sw = std::getenv("CVTMESH_TETGEN_VERBOSE")
                        ? "rq1.414YAzVO"
                        : "rq1.414YAzQO" + std::to_string(o.level) + "/" + std::to_string(o.flags);
-  try {
-    tetgen_library().tetrahedralize(sw.data(), &in, &out, nullptr, nullptr);
-  } catch (int code) {
-    throw InvariantError("TetGen -O failed (error code " + std::to_string(code) + ")");
-  }
-  if (out.numberofpoints < m.nb_vertices())
+  // In a child process (core/delaunay/tetrahedralize_isolated.h): a crash inside TetGen cannot
+  // take `compare` or `bench` down; it becomes an InvariantError, the column's failure.
+  const IsolatedTetgenOutput out =
+      tetrahedralize_isolated(sw.data(), in, "TetGen's own optimizer (-r -q -O), a baseline");
+  const int nb_out = static_cast<int>(out.points.size() / 3);
+  if (nb_out < m.nb_vertices())
     throw InvariantError("TetGen -O changed the number of points (" +
-                         std::to_string(m.nb_vertices()) + " -> " +
-                         std::to_string(out.numberofpoints) + ")");
+                         std::to_string(m.nb_vertices()) + " -> " + std::to_string(nb_out) + ")");
   const int nv = m.nb_vertices();
   for (int v = 0; v < nv; ++v)
     if (m.vclass[v].dim == 3)
-      for (int d = 0; d < 3; ++d) m.xyz[3 * v + d] = out.pointlist[3 * v + d];
+      for (int d = 0; d < 3; ++d) m.xyz[3 * v + d] = out.points[3 * v + d];
   // Points inserted by -q (interior only, -Y keeps the boundary mesh).
   const int region0 = m.tet_region.empty() ? 1 : m.tet_region[0];
-  for (int v = nv; v < out.numberofpoints; ++v) {
-    m.xyz.insert(m.xyz.end(), out.pointlist + 3 * v, out.pointlist + 3 * v + 3);
+  for (int v = nv; v < nb_out; ++v) {
+    m.xyz.insert(m.xyz.end(), out.points.begin() + 3 * v, out.points.begin() + 3 * v + 3);
     m.vclass.push_back(VertexClass{3, region0});
     if (!m.node_tags.empty()) m.node_tags.push_back(0);
   }
   m.tets.clear();
   m.tet_region.clear();
   m.tet_tags.clear();
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+  const int nt = static_cast<int>(out.tets.size() / 4);
+  for (int t = 0; t < nt; ++t) {
     int v[4];
-    for (int k = 0; k < 4; ++k) v[k] = out.tetrahedronlist[4 * t + k];
+    for (int k = 0; k < 4; ++k) v[k] = out.tets[4 * t + k];
     if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) < 0)
       std::swap(v[2], v[3]);
     m.tets.insert(m.tets.end(), v, v + 4);
-    m.tet_region.push_back(out.numberoftetrahedronattributes > 0
-                               ? static_cast<int>(out.tetrahedronattributelist[t])
-                               : (m.tet_region.empty() ? 1 : m.tet_region[0]));
+    m.tet_region.push_back(static_cast<std::size_t>(t) < out.attributes.size()
+                               ? static_cast<int>(out.attributes[t])
+                               : region0);
   }
   build_adjacency(m);
 }

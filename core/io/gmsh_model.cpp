@@ -8,10 +8,13 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
+#include <utility>
 
 #include "core/geometry/z_range.h"
 #include "core/geometry/predicates.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/place_mid_edge_nodes.h"
 #include "core/mesh/keep_loose_triangles.h"
 #include "core/mesh/constrain_kept_cell_faces.h"
 #include "core/mesh/build_adjacency.h"
@@ -33,6 +36,25 @@ std::string type_name(int type) {
   return name;
 }
 
+int nodes_per_element_of(int type) {
+  std::string name;
+  int dim = 0, order = 1, nn = 0, npn = 0;
+  std::vector<double> lc;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, nn, lc, npn);
+  } catch (...) {
+  }
+  return nn;
+}
+int nodes_per_element(int type) {
+  switch (type) {
+    case 8: return 3;
+    case 9: return 6;
+    case 11: return 10;
+    default: return nodes_per_element_of(type);
+  }
+}
+
 int type_order(int type) {
   std::string name;
   int dim = 0, order = 1, nn = 0, npn = 0;
@@ -44,11 +66,36 @@ int type_order(int type) {
   return order;
 }
 
+// Order-2 simplices and their linear counterparts: line3 (8) -> line (1), tri6 (9) -> triangle
+// (2), tet10 (11) -> tet (4); any other type is its own.
+int linear_type(int type) {
+  return type == 8 ? 1 : type == 9 ? 2 : type == 11 ? 4 : type;
+}
+int corners_of(int type) {
+  switch (linear_type(type)) {
+    case 1: return 2;
+    case 2: return 3;
+    case 4: return 4;
+    default: return nodes_per_element_of(type);
+  }
+}
+// Gmsh's order of the mid-edge nodes (after the corners): line3 (0,1); tri6 (0,1) (1,2) (2,0);
+// tet10 (0,1) (1,2) (2,0) (3,0) (3,2) (3,1).
+const std::vector<std::pair<int, int>>& mid_edge_table(int type) {
+  static const std::vector<std::pair<int, int>> line3 = {{0, 1}},
+                                                tri6 = {{0, 1}, {1, 2}, {2, 0}},
+                                                tet10 = {{0, 1}, {1, 2}, {2, 0},
+                                                         {3, 0}, {3, 2}, {3, 1}},
+                                                none;
+  return type == 8 ? line3 : type == 9 ? tri6 : type == 11 ? tet10 : none;
+}
+
 // For a high-order element: what to do instead.
 std::string order_hint(int type) {
   if (type_order(type) <= 1) return "";
-  return "; for a high-order mesh, optimize its order-1 mesh (gmsh -order 1, or "
-         "Mesh.ElementOrder = 1) and raise the order afterwards (gmsh -order N)";
+  return "; cvtmesh reads order-2 tetrahedral meshes (tet10, tri6, line3); for another "
+         "high-order mesh, optimize its order-1 mesh (gmsh -order 1, or Mesh.ElementOrder = 1) "
+         "and raise the order afterwards (gmsh -order N)";
 }
 
 std::string check_summary(const MeshCheck& c) {
@@ -119,25 +166,63 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       info.groups.push_back(g);
     }
 
-    // Nodes, classified on the entity they belong to.
-    std::vector<std::size_t> all_tags;
+    // Elements of every entity, read once.
+    struct EntityElements {
+      int d = 0, t = 0;
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> etags, enodes;
+    };
+    std::vector<EntityElements> elements;
+    for (const auto& [d, t] : ents) {
+      EntityElements e;
+      e.d = d;
+      e.t = t;
+      gmsh::model::mesh::getElements(e.types, e.etags, e.enodes, d, t);
+      elements.push_back(std::move(e));
+    }
+    // Order-2 simplices (line3, tri6, tet10): their corners make the mesh we optimize; their
+    // mid-edge nodes are kept aside (info.high_order) and re-placed by the writers.
+    bool order2 = false;
+    std::unordered_set<std::size_t> mid_nodes, corner_nodes;
+    for (const auto& e : elements)
+      for (std::size_t k = 0; k < e.types.size(); ++k) {
+        const int nn = nodes_per_element(e.types[k]), nc = corners_of(e.types[k]);
+        const bool o2 = linear_type(e.types[k]) != e.types[k];
+        order2 |= o2;
+        for (std::size_t i = 0; i < e.enodes[k].size(); ++i)
+          (o2 && static_cast<int>(i % nn) >= nc ? mid_nodes : corner_nodes).insert(e.enodes[k][i]);
+      }
+    if (order2 && dim == 2)
+      throw InputError(what +
+                       ": order-2 triangles in a 2D mesh are not supported (3D order-2 meshes "
+                       "are); optimize its order-1 mesh (gmsh -order 1) and raise the order "
+                       "afterwards (gmsh -order 2)");
+    for (std::size_t n : corner_nodes) mid_nodes.erase(n);
+
+    // Nodes, classified on the entity they belong to (not the mid-edge nodes of order 2).
+    std::vector<std::size_t> all_tags, node_tags;
     std::vector<double> all_xyz, par;
     gmsh::model::mesh::getNodes(all_tags, all_xyz, par, -1, -1, false, false);
-    const std::size_t nv = all_tags.size();
+    std::unordered_map<std::size_t, std::size_t> all_index;  // tag -> position in all_tags
+    if (order2) {
+      all_index.reserve(all_tags.size() * 2);
+      for (std::size_t i = 0; i < all_tags.size(); ++i) all_index.emplace(all_tags[i], i);
+    }
     std::unordered_map<std::size_t, int> index;
-    index.reserve(nv * 2);
-    std::vector<double> xyz(3 * nv);
-    std::vector<VertexClass> vclass(nv);
-    for (std::size_t i = 0; i < nv; ++i) {
-      if (!index.emplace(all_tags[i], static_cast<int>(i)).second)
-        throw InputError(what + ": node tag " + std::to_string(all_tags[i]) + " is duplicated");
-      for (int k = 0; k < 3; ++k) {
-        xyz[3 * i + k] = all_xyz[3 * i + k];
+    index.reserve(all_tags.size() * 2);
+    std::vector<double> xyz;
+    std::vector<VertexClass> vclass;
+    for (std::size_t i = 0; i < all_tags.size(); ++i) {
+      for (int k = 0; k < 3; ++k)
         if (!std::isfinite(all_xyz[3 * i + k]))
           throw InputError(what + ": node " + std::to_string(all_tags[i]) +
                            " has a NaN or infinite coordinate");
-      }
-      vclass[i].dim = static_cast<std::int8_t>(dim);
+      if (order2 && mid_nodes.count(all_tags[i])) continue;
+      if (!index.emplace(all_tags[i], static_cast<int>(node_tags.size())).second)
+        throw InputError(what + ": node tag " + std::to_string(all_tags[i]) + " is duplicated");
+      node_tags.push_back(all_tags[i]);
+      xyz.insert(xyz.end(), &all_xyz[3 * i], &all_xyz[3 * i] + 3);
+      vclass.push_back({static_cast<std::int8_t>(dim), 0});
     }
     for (const auto& [d, t] : ents) {
       std::vector<std::size_t> tags;
@@ -157,22 +242,62 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
                          ", which does not exist");
       return it->second;
     };
+    // The input's mid-edge nodes, once per edge.
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid_of_edge;
+    auto add_mid_nodes = [&](int type, const std::size_t* nd) {
+      const auto& table = mid_edge_table(type);
+      const int nc = corners_of(type);
+      for (std::size_t k = 0; k < table.size(); ++k) {
+        std::size_t a = nd[table[k].first], b = nd[table[k].second];
+        if (a > b) std::swap(a, b);
+        const std::size_t m = nd[nc + k];
+        auto [it, fresh] = mid_of_edge.emplace(std::make_pair(a, b), m);
+        if (!fresh) continue;
+        auto pos = [&](std::size_t tag) {
+          auto f = all_index.find(tag);
+          if (f == all_index.end())
+            throw InputError(what + ": an element references node " + std::to_string(tag) +
+                             ", which does not exist");
+          return &all_xyz[3 * f->second];
+        };
+        MidEdgeNodes& h = info.high_order;
+        h.corner_tags.insert(h.corner_tags.end(), {a, b});
+        h.corner_xyz.insert(h.corner_xyz.end(), pos(a), pos(a) + 3);
+        h.corner_xyz.insert(h.corner_xyz.end(), pos(b), pos(b) + 3);
+        h.tags.push_back(m);
+        h.xyz.insert(h.xyz.end(), pos(m), pos(m) + 3);
+      }
+    };
+    if (order2) info.high_order.order = 2;
 
     // Elements, entity by entity.
     std::vector<int> cells, cell_entity, facets, facet_entity;
     std::vector<std::size_t> cell_tags, facet_tags;
-    for (const auto& [d, t] : ents) {
-      std::vector<int> types;
-      std::vector<std::vector<std::size_t>> etags, enodes;
-      gmsh::model::mesh::getElements(types, etags, enodes, d, t);
-      for (std::size_t k = 0; k < types.size(); ++k) {
-        const int type = types[k];
-        const auto& tg = etags[k];
-        const auto& nd = enodes[k];
+    for (const auto& el : elements) {
+      const int d = el.d, t = el.t;
+      for (std::size_t k = 0; k < el.types.size(); ++k) {
+        // An order-2 simplex is read as its linear one (its corners come first).
+        const int type = linear_type(el.types[k]);
+        const auto& tg = el.etags[k];
+        std::vector<std::size_t> corners;
+        if (type != el.types[k]) {
+          const int nn = nodes_per_element(el.types[k]), nc = corners_of(el.types[k]);
+          for (std::size_t e = 0; e < tg.size(); ++e) {
+            const std::size_t* en = &el.enodes[k][nn * e];
+            corners.insert(corners.end(), en, en + nc);
+            add_mid_nodes(el.types[k], en);
+          }
+        }
+        const auto& nd = type != el.types[k] ? corners : el.enodes[k];
         // Hybrid meshes: hexahedra (5), prisms (6), pyramids (7) in a volume and quadrangles
         // (3) on a surface are kept verbatim; optimize() fixes their vertices.
         const bool kept_type = dim == 3 && ((d == 3 && (type == 5 || type == 6 || type == 7)) ||
                                             (d == 2 && type == 3));
+        if (kept_type && order2)
+          throw InputError(what + ": '" + type_name(type) + "' elements in an order-2 mesh " +
+                           "(volume / surface " + std::to_string(t) +
+                           "): order-2 hybrid meshes are not supported; optimize its order-1 "
+                           "mesh (gmsh -order 1) and raise the order afterwards (gmsh -order 2)");
         if (kept_type || (d < dim - 1 && (type == 15 || type == 1))) {
           ElementBlock b;
           b.dim = d;
@@ -229,7 +354,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       TetMesh& m = out.tet;
       m.xyz = std::move(xyz);
       m.vclass = std::move(vclass);
-      m.node_tags = all_tags;
+      m.node_tags = std::move(node_tags);
       m.tets = std::move(cells);
       m.tet_region = std::move(cell_entity);
       m.tet_tags = std::move(cell_tags);
@@ -257,7 +382,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       if (!c.ok) throw InputError(what + ": invalid tetrahedral mesh: " + check_summary(c));
     } else {
       TriMesh2& m = out.tri;
-      const std::size_t n = all_tags.size();
+      const std::size_t n = node_tags.size();
       // Planarity: every node of the 2D mesh at the same z (relative tolerance).
       const ZRange zr = z_range(xyz);
       const double zmin = zr.zmin, zmax = zr.zmax;
@@ -296,7 +421,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         m.xy[2 * i + 1] = xyz[3 * i + 1];
       }
       m.vclass = std::move(vclass);
-      m.node_tags = all_tags;
+      m.node_tags = std::move(node_tags);
       m.tris = std::move(cells);
       m.tri_region = std::move(cell_entity);
       m.tri_tags = std::move(cell_tags);
@@ -393,10 +518,12 @@ void complete_model_info(MeshData& data) {
 
 namespace {
 
-// Node tags for every vertex: the original ones where known, fresh ones above the maximum.
-std::vector<std::size_t> node_tags_for(const std::vector<std::size_t>& original, int nv) {
+// Node tags for every vertex: the original ones where known, fresh ones above the maximum (and
+// above `floor`: tags taken by other nodes, e.g. an order-2 input's mid-edge nodes).
+std::vector<std::size_t> node_tags_for(const std::vector<std::size_t>& original, int nv,
+                                       std::size_t floor = 0) {
   std::vector<std::size_t> tags(nv, 0);
-  std::size_t next = 1;
+  std::size_t next = floor + 1;
   for (int i = 0; i < nv && i < static_cast<int>(original.size()); ++i)
     next = std::max(next, original[i] + 1);
   std::set<std::size_t> used;
@@ -408,6 +535,14 @@ std::vector<std::size_t> node_tags_for(const std::vector<std::size_t>& original,
       tags[i] = next++;
   }
   return tags;
+}
+
+// An order-2 mesh's mid-edge nodes for the mesh being written: the placement made for these
+// coordinates (place_mid_edge_nodes with the CAD, by the caller), else one made here (no CAD).
+MidEdgePlacement mid_edge_nodes_for(const TetMesh& m) {
+  const MidEdgePlacement& p = m.model.high_order.placed;
+  if (!p.edges.empty() && p.fingerprint == mid_edge_fingerprint(m)) return p;
+  return place_mid_edge_nodes(m);
 }
 
 struct ElementSet {
@@ -425,7 +560,43 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
   // Nodes.
   const int nv = dim == 3 ? data.tet.nb_vertices() : data.tri.nb_vertices();
   const auto& vclass = dim == 3 ? data.tet.vclass : data.tri.vclass;
-  const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv);
+  const bool order2 = dim == 3 && info.high_order.order == 2;
+  MidEdgePlacement mid;
+  std::size_t floor = 0;
+  if (order2) {
+    mid = mid_edge_nodes_for(data.tet);
+    for (std::size_t t : info.high_order.tags) floor = std::max(floor, t);
+  }
+  const auto ntags =
+      node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv, floor);
+  // Mid-edge node tags: the input's where the edge is the input's, fresh ones above every other.
+  std::vector<std::size_t> mid_tags(mid.tags.size());
+  if (order2) {
+    std::set<std::size_t> taken(ntags.begin(), ntags.end());
+    std::size_t next = floor + 1;
+    for (std::size_t t : ntags) next = std::max(next, t + 1);
+    for (std::size_t k = 0; k < mid.tags.size(); ++k)
+      mid_tags[k] = mid.tags[k] && taken.insert(mid.tags[k]).second ? mid.tags[k] : 0;
+    for (std::size_t k = 0; k < mid.tags.size(); ++k)
+      if (!mid_tags[k]) mid_tags[k] = next++;
+  }
+  // The mid-edge node of the edge (a, b) (order 2).
+  auto mid_tag = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    std::size_t lo = 0, hi = mid.tags.size();
+    while (lo < hi) {
+      const std::size_t k = (lo + hi) / 2;
+      const int ka = mid.edges[2 * k], kb = mid.edges[2 * k + 1];
+      if (ka < a || (ka == a && kb < b))
+        lo = k + 1;
+      else
+        hi = k;
+    }
+    if (lo == mid.tags.size() || mid.edges[2 * lo] != a || mid.edges[2 * lo + 1] != b)
+      throw InvariantError("order-2 output: no mid-edge node for the edge (" + std::to_string(a) +
+                           ", " + std::to_string(b) + ")");
+    return mid_tags[lo];
+  };
   std::map<std::pair<int, int>, std::pair<std::vector<std::size_t>, std::vector<double>>>
       per_entity;
   for (int i = 0; i < nv; ++i) {
@@ -439,8 +610,24 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
       xyz.insert(xyz.end(), {p[0], p[1], data.tri.z0});
     }
   }
+  for (std::size_t k = 0; k < mid.tags.size(); ++k) {
+    auto& [tags, xyz] = per_entity[{mid.where[k].dim, mid.where[k].entity}];
+    tags.push_back(mid_tags[k]);
+    xyz.insert(xyz.end(), &mid.xyz[3 * k], &mid.xyz[3 * k] + 3);
+  }
   for (const auto& [key, v] : per_entity)
     gmsh::model::mesh::addNodes(key.first, key.second, v.first, v.second);
+  // Order 2: the Gmsh type and node list of a simplex given by its corners.
+  auto elevate = [&](int type, const int* c, std::vector<std::size_t>& nd) {
+    static const int kLine[1][2] = {{0, 1}};
+    static const int kTri[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+    static const int kTet[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+    const int(*table)[2] = type == 1 ? kLine : type == 2 ? kTri : kTet;
+    const int n = type == 1 ? 1 : type == 2 ? 3 : 6;
+    for (int k = 0; k < n; ++k) nd.push_back(mid_tag(c[table[k][0]], c[table[k][1]]));
+    return type == 1 ? 8 : type == 2 ? 9 : 11;
+  };
+  auto elevates = [&](int type) { return order2 && (type == 1 || type == 2 || type == 4); };
 
   // Element tags: keep the original ones where they are unique, fresh ones otherwise.
   std::size_t next = 1;
@@ -465,6 +652,17 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
     std::vector<std::size_t> tg, nd;
     for (std::size_t e = 0; e < b.tags.size(); ++e)
       tg.push_back(tag_for(b.tags, static_cast<int>(e)));
+    if (elevates(b.gmsh_type)) {
+      const int npe = b.gmsh_type == 1 ? 2 : b.gmsh_type == 2 ? 3 : 4;
+      int type = b.gmsh_type;
+      for (std::size_t e = 0; e < b.tags.size(); ++e) {
+        const int* c = &b.nodes[npe * e];
+        for (int j = 0; j < npe; ++j) nd.push_back(ntags[c[j]]);
+        type = elevate(b.gmsh_type, c, nd);
+      }
+      gmsh::model::mesh::addElementsByType(b.entity, type, tg, nd);
+      continue;
+    }
     for (int n : b.nodes) nd.push_back(ntags[n]);
     gmsh::model::mesh::addElementsByType(b.entity, b.gmsh_type, tg, nd);
   }
@@ -481,15 +679,19 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
       const std::size_t tag = tag_for(orig, e);
       tg.push_back(tag);
       const bool flip = cw && std::binary_search(cw->begin(), cw->end(), entity[e]);
+      int c[4];
       for (int j = 0; j < npe; ++j) {
         int jj = j;
         if (flip && j > 0) jj = npe - j;  // (0,1,2) -> (0,2,1)
-        nd.push_back(ntags[conn[npe * e + jj]]);
+        c[j] = conn[npe * e + jj];
+        nd.push_back(ntags[c[j]]);
       }
+      if (elevates(type)) elevate(type, c, nd);
       if (main) w.element_tags.push_back(tag);
     }
+    const int written = !elevates(type) ? type : type == 1 ? 8 : type == 2 ? 9 : 11;
     for (const auto& [ent, b] : blocks)
-      gmsh::model::mesh::addElementsByType(ent, type, b.first, b.second);
+      gmsh::model::mesh::addElementsByType(ent, written, b.first, b.second);
   };
   if (dim == 3) {
     add_simplices(data.tet.tris, 3, data.tet.tri_surface, data.tet.tri_tags, 2, false, nullptr);

@@ -267,6 +267,11 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   if (ext == ".msh" && data.model().periodic.empty() && read_msh_format(path).version < 3)
     data.model().periodic = read_msh2_periodic(path);
   data.model().origin = origin;
+  // An order-2 file's blocks are written back as order 2 from their linear counterparts.
+  if (data.model().high_order.order == 2) {
+    for (auto& b : file_blocks) b[2] = b[2] == 8 ? 1 : b[2] == 9 ? 2 : b[2] == 11 ? 4 : b[2];
+    std::sort(file_blocks.begin(), file_blocks.end());
+  }
   data.model().file_blocks = std::move(file_blocks);
   // The placeholder group of our MSH 2.2 output (see write_mesh.h) is not a user's group.
   auto& groups = data.model().groups;

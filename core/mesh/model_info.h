@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh/mid_edge_nodes.h"
+
 namespace cvtmesh {
 
 struct ModelEntity {
@@ -64,6 +66,8 @@ struct ModelInfo {
   // kMeshFile: the (dim, entity tag, Gmsh element type) blocks the file held, before the reader
   // restored missing boundary facets (gmsh_missing_facets.h); sorted.
   std::vector<std::array<int, 3>> file_blocks;
+  // An order-2 input: its mid-edge nodes (order 1 otherwise).
+  MidEdgeNodes high_order;
 };
 
 }  // namespace cvtmesh

@@ -196,14 +196,15 @@ TEST(RobustInputs, PrismLayerIsKeptWithItsVerticesAndTheTetsOptimized) {
   EXPECT_EQ(back.tet.nb_tris(), d.tet.nb_tris());
 }
 
-TEST(RobustInputs, SecondOrderMeshIsRefusedWithAHint) {
-  try {
-    read_mesh(write_geo("order2", std::string(kBox) + "Mesh.MeshSizeMax = 0.5;\n"
-                                                      "Mesh.ElementOrder = 2;\n"));
-    FAIL() << "an order-2 mesh was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("-order 1"), std::string::npos) << e.what();
-  }
+TEST(RobustInputs, SecondOrderMeshIsOptimizedOnItsCorners) {
+  // Order 2 (tests/io/order2_test.cpp has the end-to-end runs): the corner mesh is optimized and
+  // the mesh stays order 2.
+  MeshData d = read_mesh(write_geo("order2", std::string(kBox) + "Mesh.MeshSizeMax = 0.5;\n"
+                                                                 "Mesh.ElementOrder = 2;\n"));
+  EXPECT_EQ(d.model().high_order.order, 2);
+  const OptimizeResult r = optimize(d, quick());
+  expect_valid_and_no_worse(d, r);
+  EXPECT_EQ(d.model().high_order.order, 2);
 }
 
 TEST(RobustInputs, OutputCoordinatesAreThoseA16DigitWriterStores) {

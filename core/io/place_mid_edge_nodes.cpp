@@ -1,0 +1,258 @@
+#include "core/io/place_mid_edge_nodes.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/tet10_positive.h"
+#include "core/mesh/constrain_kept_cell_faces.h"
+
+namespace cvtmesh {
+namespace {
+
+using Key = std::uint64_t;  // (smaller vertex id) << 32 | larger
+
+Key edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<Key>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+struct TagPairHash {
+  std::size_t operator()(const std::pair<std::size_t, std::size_t>& p) const {
+    return std::hash<std::size_t>()(p.first * 0x9e3779b97f4a7c15ULL ^ p.second);
+  }
+};
+
+}  // namespace
+
+std::uint64_t mid_edge_fingerprint(const TetMesh& mesh) {
+  std::uint64_t h = 1469598103934665603ULL;
+  const unsigned char* p = reinterpret_cast<const unsigned char*>(mesh.xyz.data());
+  const std::size_t n = mesh.xyz.size() * sizeof(double);
+  for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+  return h ^ mesh.xyz.size();
+}
+
+MidEdgePlacement place_mid_edge_nodes(const TetMesh& mesh, const MidEdgeProjector& project,
+                                      bool fallback) {
+  MidEdgePlacement out;
+  out.fingerprint = mid_edge_fingerprint(mesh);
+  const MidEdgeNodes& in = mesh.model.high_order;
+  // Every edge with the entity of lowest dimension it lies on.
+  std::map<Key, VertexClass> edges;
+  auto add = [&](int a, int b, int dim, int entity) {
+    auto [it, fresh] =
+        edges.emplace(edge_key(a, b), VertexClass{static_cast<std::int8_t>(dim), entity});
+    if (!fresh && dim < it->second.dim) it->second = {static_cast<std::int8_t>(dim), entity};
+  };
+  for (int t = 0; t < mesh.nb_tets(); ++t) {
+    const int* v = &mesh.tets[4 * t];
+    if (v[0] < 0) continue;
+    for (const auto& e : kTet10Edge) add(v[e[0]], v[e[1]], 3, mesh.tet_region[t]);
+  }
+  for (int f = 0; f < mesh.nb_tris(); ++f) {
+    const int* v = &mesh.tris[3 * f];
+    if (v[0] < 0) continue;
+    const int s = mesh.tri_surface[f];
+    const int dim = is_kept_cell_interface(s) ? 3 : 2;
+    for (int k = 0; k < 3; ++k) add(v[k], v[(k + 1) % 3], dim, dim == 2 ? s : 0);
+  }
+  for (const ElementBlock& b : mesh.model.extra) {
+    if (b.gmsh_type == 1)
+      for (std::size_t e = 0; 2 * e + 1 < b.nodes.size(); ++e)
+        add(b.nodes[2 * e], b.nodes[2 * e + 1], 1, b.entity);
+    if (b.gmsh_type == 2)
+      for (std::size_t e = 0; 3 * e + 2 < b.nodes.size(); ++e)
+        for (int k = 0; k < 3; ++k)
+          add(b.nodes[3 * e + k], b.nodes[3 * e + (k + 1) % 3], 2, b.entity);
+  }
+  // A surface edge whose corners lie on one curve (a curve's vertices, or its end points) is on
+  // that curve: inputs saved without their curves' line elements (a .msh with physical groups
+  // on surfaces and volumes only) still get their curve nodes on the curve.
+  std::map<int, std::vector<int>> curves_of_point;  // point tag -> curves it bounds
+  for (const ModelEntity& e : mesh.model.entities)
+    if (e.dim == 1)
+      for (int p : e.boundary) curves_of_point[p < 0 ? -p : p].push_back(e.tag);
+  auto on_curve = [&](const VertexClass& a, const VertexClass& b) {
+    auto bounds = [&](int point, int curve) {
+      auto it = curves_of_point.find(point);
+      return it != curves_of_point.end() &&
+             std::find(it->second.begin(), it->second.end(), curve) != it->second.end();
+    };
+    if (a.dim == 1 && b.dim == 1) return a.entity == b.entity ? a.entity : 0;
+    if (a.dim == 1 && b.dim == 0) return bounds(b.entity, a.entity) ? a.entity : 0;
+    if (a.dim == 0 && b.dim == 1) return bounds(a.entity, b.entity) ? b.entity : 0;
+    if (a.dim == 0 && b.dim == 0 && a.entity != b.entity) {
+      auto it = curves_of_point.find(a.entity);
+      if (it != curves_of_point.end())
+        for (int c : it->second)
+          if (bounds(b.entity, c)) return c;
+    }
+    return 0;
+  };
+  if (mesh.vclass.size() == static_cast<std::size_t>(mesh.nb_vertices()))
+    for (auto& [key, where] : edges) {
+      if (where.dim != 2) continue;
+      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+      if (const int c = on_curve(mesh.vclass[a], mesh.vclass[b])) where = {1, c};
+    }
+  // The input's nodes by their corners' tags.
+  std::unordered_map<std::pair<std::size_t, std::size_t>, int, TagPairHash> input;
+  input.reserve(in.tags.size() * 2);
+  for (std::size_t i = 0; i < in.tags.size(); ++i)
+    input.emplace(std::make_pair(in.corner_tags[2 * i], in.corner_tags[2 * i + 1]),
+                  static_cast<int>(i));
+  auto tag_of = [&](int v) -> std::size_t {
+    return v < static_cast<int>(mesh.node_tags.size()) ? mesh.node_tags[v] : 0;
+  };
+
+  const std::size_t ne = edges.size();
+  out.edges.reserve(2 * ne);
+  out.tags.assign(ne, 0);
+  out.xyz.resize(3 * ne);
+  out.where.reserve(ne);
+  std::vector<char> curved(ne, 0);          // not on the straight midpoint
+  std::vector<int*> category(ne, nullptr);  // the count it is in
+  std::size_t k = 0;
+  for (const auto& [key, where] : edges) {
+    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+    out.edges.push_back(a);
+    out.edges.push_back(b);
+    out.where.push_back(where);
+    const double* pa = mesh.point(a);
+    const double* pb = mesh.point(b);
+    double* x = &out.xyz[3 * k];
+    for (int c = 0; c < 3; ++c) x[c] = 0.5 * (pa[c] + pb[c]);
+    // The input's node of this edge, if any (corners by tag, smaller first).
+    int src = -1;
+    const double* qa = pa;
+    const double* qb = pb;
+    std::size_t ta = tag_of(a), tb = tag_of(b);
+    if (ta && tb) {
+      if (ta > tb) {
+        std::swap(ta, tb);
+        std::swap(qa, qb);
+      }
+      if (auto it = input.find({ta, tb}); it != input.end()) src = it->second;
+    }
+    if (src >= 0) {
+      out.tags[k] = in.tags[src];
+      const double* ca = &in.corner_xyz[6 * src];
+      const bool unmoved = std::memcmp(ca, qa, 3 * sizeof(double)) == 0 &&
+                           std::memcmp(ca + 3, qb, 3 * sizeof(double)) == 0;
+      if (unmoved) {
+        for (int c = 0; c < 3; ++c) {
+          x[c] = in.xyz[3 * src + c];
+          curved[k] |= x[c] != 0.5 * (pa[c] + pb[c]);
+        }
+        ++out.nb_kept;
+        category[k] = &out.nb_kept;
+        ++k;
+        continue;
+      }
+    }
+    double projected[3];
+    if (where.dim < 3 && project && project(where.dim, where.entity, x, projected)) {
+      for (int c = 0; c < 3; ++c) x[c] = projected[c];
+      curved[k] = 1;
+      ++out.nb_cad;
+      category[k] = &out.nb_cad;
+    } else if (where.dim < 3 && src >= 0) {
+      const double* ca = &in.corner_xyz[6 * src];
+      for (int c = 0; c < 3; ++c) x[c] += in.xyz[3 * src + c] - 0.5 * (ca[c] + ca[3 + c]);
+      curved[k] = 1;
+      ++out.nb_curved;
+      category[k] = &out.nb_curved;
+    } else {
+      ++out.nb_straight;
+      category[k] = &out.nb_straight;
+    }
+    ++k;
+  }
+
+  // Validity: the tets' 6 nodes, then the fallback to straight nodes where a tet fails.
+  auto edge_index = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    // out.edges is sorted by (a, b): binary search on pairs.
+    std::size_t lo = 0, hi = ne;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      const int ma = out.edges[2 * mid], mb = out.edges[2 * mid + 1];
+      if (ma < a || (ma == a && mb < b))
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return static_cast<int>(lo);
+  };
+  const int nt = mesh.nb_tets();
+  std::vector<int> tet_edges(6 * static_cast<std::size_t>(nt), -1);
+  std::vector<std::vector<int>> edge_tets(ne);
+  for (int t = 0; t < nt; ++t) {
+    const int* v = &mesh.tets[4 * t];
+    if (v[0] < 0) continue;
+    for (int e = 0; e < 6; ++e) {
+      const int i = edge_index(v[kTet10Edge[e][0]], v[kTet10Edge[e][1]]);
+      tet_edges[6 * t + e] = i;
+      if (curved[i]) edge_tets[i].push_back(t);
+    }
+  }
+  auto positive = [&](int t) {
+    const int* v = &mesh.tets[4 * t];
+    const double* c[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])};
+    const double* m[6];
+    for (int e = 0; e < 6; ++e) m[e] = &out.xyz[3 * tet_edges[6 * t + e]];
+    return tet10_positive(c, m);
+  };
+  std::vector<int> queue;
+  for (int t = 0; t < nt; ++t)
+    if (mesh.tets[4 * t] >= 0) {
+      bool any = false;
+      for (int e = 0; e < 6; ++e) any |= curved[tet_edges[6 * t + e]] != 0;
+      if (any) queue.push_back(t);
+    }
+  if (!fallback) queue.clear();
+  while (!queue.empty()) {
+    const int t = queue.back();
+    queue.pop_back();
+    if (positive(t)) continue;
+    for (int e = 0; e < 6; ++e) {
+      const int i = tet_edges[6 * t + e];
+      if (!curved[i]) continue;
+      curved[i] = 0;
+      const double* pa = mesh.point(out.edges[2 * i]);
+      const double* pb = mesh.point(out.edges[2 * i + 1]);
+      for (int c = 0; c < 3; ++c) out.xyz[3 * i + c] = 0.5 * (pa[c] + pb[c]);
+      ++out.nb_fallback;
+      --*category[i];
+      ++out.nb_straight;
+      category[i] = &out.nb_straight;
+      for (int u : edge_tets[i])
+        if (u != t) queue.push_back(u);
+    }
+  }
+  for (int t = 0; t < nt; ++t)
+    if (mesh.tets[4 * t] >= 0 && !positive(t)) ++out.nb_invalid;
+  return out;
+}
+
+std::string mid_edge_summary(const MidEdgePlacement& p) {
+  const std::size_t n = p.tags.size();
+  std::string s = "order-2 mesh: " + std::to_string(n) +
+                  " mid-edge nodes: " + std::to_string(p.nb_kept) + " kept from the input";
+  if (p.nb_cad) s += ", " + std::to_string(p.nb_cad) + " projected on the CAD";
+  if (p.nb_curved)
+    s += ", " + std::to_string(p.nb_curved) + " on the input's curved boundary (offset carried)";
+  s += ", " + std::to_string(p.nb_straight) + " at the straight edge midpoint";
+  if (p.nb_fallback)
+    s += "; " + std::to_string(p.nb_fallback) +
+         " curved nodes put back on the straight midpoint because the element would invert";
+  if (p.nb_invalid)
+    s += "; " + std::to_string(p.nb_invalid) + " elements not positive even with straight edges";
+  return s;
+}
+
+}  // namespace cvtmesh

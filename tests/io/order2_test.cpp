@@ -1,0 +1,243 @@
+// Order-2 meshes (tet10, tri6, line3; issue 14): read as their corner mesh, optimized, written back
+// as order 2 with the mid-edge nodes re-placed: kept where the edge and its corners are the
+// input's, on the CAD for a CAD model, straight in the interior; no inverted tet10.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <gmsh.h>
+
+#include "core/geometry/tet10_positive.h"
+#include "core/io/gmsh_session.h"
+#include "core/io/read_mesh.h"
+#include "core/io/write_mesh.h"
+#include "core/mesh/check_mesh.h"
+#include "core/util/error.h"
+#include "tests/io/gmsh_dump.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+using testing::gmsh_dump;
+using testing::GmshDump;
+using testing::run;
+
+// Gmsh's node order of a tet10's mid-edge nodes: (0,1) (1,2) (2,0) (3,0) (3,2) (3,1).
+const int kGmshTet10[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+
+std::array<double, 3> xyz_of(const GmshDump& d, std::size_t tag) {
+  const auto& n = d.nodes.at(tag);
+  return {std::get<0>(n), std::get<1>(n), std::get<2>(n)};
+}
+
+// Counts of elements by Gmsh type.
+std::map<int, int> types_of(const GmshDump& d) {
+  std::map<int, int> t;
+  for (const auto& [tag, e] : d.elements) ++t[std::get<0>(e)];
+  return t;
+}
+
+// Every tet10 positive (tet10_positive, on the nodes as written).
+int nb_not_positive(const GmshDump& d) {
+  int bad = 0;
+  for (const auto& [tag, e] : d.elements) {
+    if (std::get<0>(e) != 11) continue;
+    const auto& nd = std::get<3>(e);
+    std::array<std::array<double, 3>, 10> p;
+    for (int i = 0; i < 10; ++i) p[i] = xyz_of(d, nd[i]);
+    const double* c[4] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
+    const double* m[6];
+    // tet10_positive's edge order from Gmsh's.
+    for (int k = 0; k < 6; ++k)
+      for (int g = 0; g < 6; ++g) {
+        const int a = kGmshTet10[g][0], b = kGmshTet10[g][1];
+        if ((a == kTet10Edge[k][0] && b == kTet10Edge[k][1]) ||
+            (b == kTet10Edge[k][0] && a == kTet10Edge[k][1]))
+          m[k] = p[4 + g].data();
+      }
+    bad += !tet10_positive(c, m);
+  }
+  return bad;
+}
+
+// Largest distance of a tet10's mid-edge node classified in the volume (dim 3) from its edge's
+// straight midpoint, relative to the edge length.
+double max_interior_offset(const GmshDump& d) {
+  double worst = 0;
+  for (const auto& [tag, e] : d.elements) {
+    if (std::get<0>(e) != 11) continue;
+    const auto& nd = std::get<3>(e);
+    for (int g = 0; g < 6; ++g) {
+      if (std::get<3>(d.nodes.at(nd[4 + g])) != 3) continue;
+      const auto a = xyz_of(d, nd[kGmshTet10[g][0]]), b = xyz_of(d, nd[kGmshTet10[g][1]]);
+      const auto m = xyz_of(d, nd[4 + g]);
+      double off = 0, len = 0;
+      for (int k = 0; k < 3; ++k) {
+        off += std::pow(m[k] - 0.5 * (a[k] + b[k]), 2);
+        len += std::pow(a[k] - b[k], 2);
+      }
+      worst = std::max(worst, std::sqrt(off / len));
+    }
+  }
+  return worst;
+}
+
+std::string write_geo(const std::string& dir, const std::string& name, const std::string& body) {
+  const std::string path = dir + "/" + name;
+  std::ofstream(path) << body;
+  return path;
+}
+
+const char* kBox =
+    "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 0.6};\n"
+    "Physical Volume(\"solid\", 7) = {1};\nPhysical Surface(\"skin\", 8) = {1, 2, 3, 4, 5, 6};\n"
+    "Mesh.MeshSizeMax = 0.25;\nMesh.ElementOrder = 2;\n";
+const char* kBall =
+    "SetFactory(\"OpenCASCADE\");\nSphere(1) = {0.1, 0.2, 0.3, 1};\n"
+    "Mesh.MeshSizeMax = 0.4;\nMesh.ElementOrder = 2;\n";
+
+// An order-2 box from the gmsh executable, as a user brings it.
+std::string order2_box_msh(const std::string& dir) {
+  const std::string geo = write_geo(dir, "box.geo", kBox);
+  const std::string msh = dir + "/box2.msh";
+  std::string log;
+  EXPECT_EQ(run("gmsh -v 0 -3 " + geo + " -o " + msh, &log), 0) << log;
+  return msh;
+}
+
+TEST(Order2, ReadAsCornerMeshAndConvertKeepsEverything) {
+  const std::string dir = testing::temp_dir();
+  const std::string msh = order2_box_msh(dir);
+  const MeshData d = read_mesh(msh);
+  ASSERT_EQ(d.dim, 3);
+  EXPECT_EQ(d.model().high_order.order, 2);
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+  // The mesh's vertices are the corners: every one is used by a tet.
+  std::set<int> used(d.tet.tets.begin(), d.tet.tets.end());
+  EXPECT_EQ(static_cast<int>(used.size()), d.tet.nb_vertices());
+  EXPECT_GT(d.model().high_order.tags.size(), 0u);
+  // convert: the same Gmsh model back (types, tags, nodes, groups).
+  const std::string copy = dir + "/copy.msh";
+  std::string log;
+  ASSERT_EQ(run(testing::cli_path() + " convert " + msh + " " + copy, &log), 0) << log;
+  const GmshDump a = gmsh_dump(msh), b = gmsh_dump(copy);
+  EXPECT_EQ(a.groups, b.groups);
+  EXPECT_TRUE(a.nodes == b.nodes) << "node tags, coordinates or classification differ";
+  EXPECT_TRUE(a.elements == b.elements) << "elements differ";
+  // stats on an order-2 file.
+  EXPECT_EQ(run(testing::cli_path() + " stats " + msh, &log), 0) << log;
+}
+
+TEST(Order2, OptimizeDiscreteBoxStaysOrder2WithStraightInteriorNodes) {
+  const std::string dir = testing::temp_dir();
+  const std::string msh = order2_box_msh(dir);
+  const std::string out = dir + "/opt.msh";
+  std::string log;
+  ASSERT_EQ(run(testing::cli_path() + " optimize " + msh + " -o " + out, &log), 0) << log;
+  EXPECT_NE(log.find("order-2 mesh:"), std::string::npos) << log;
+  EXPECT_EQ(run(testing::cli_path() + " check " + out, &log), 0) << log;
+  EXPECT_EQ(run(testing::cli_path() + " stats " + out, &log), 0) << log;
+  const GmshDump in = gmsh_dump(msh), o = gmsh_dump(out);
+  // Only order-2 simplices (and points) in, the same out.
+  std::set<int> tin, tout;
+  for (const auto& [t, n] : types_of(in)) tin.insert(t);
+  for (const auto& [t, n] : types_of(o)) tout.insert(t);
+  EXPECT_EQ(tin, tout);
+  EXPECT_EQ(tout.count(4) + tout.count(2) + tout.count(1), 0u);
+  EXPECT_EQ(in.groups, o.groups);
+  EXPECT_EQ(nb_not_positive(o), 0);
+  // The interior moved: its mid-edge nodes are straight midpoints of the new edges.
+  EXPECT_LT(max_interior_offset(o), 1e-12);
+  bool moved = false;
+  for (const auto& [tag, n] : o.nodes)
+    if (std::get<3>(n) == 3 && in.nodes.count(tag) && in.nodes.at(tag) != n) moved = true;
+  EXPECT_TRUE(moved) << "the optimizer moved no interior node: the test shows nothing";
+}
+
+TEST(Order2, OccBallMidEdgeBoundaryNodesOnTheSphere) {
+  const std::string dir = testing::temp_dir();
+  const std::string geo = write_geo(dir, "ball.geo", kBall);
+  for (const std::string flags : {"", " --fix-boundary"}) {
+    const std::string out = dir + "/ball_opt.msh";
+    std::string log;
+    ASSERT_EQ(run(testing::cli_path() + " optimize " + geo + flags + " -o " + out, &log), 0) << log;
+    EXPECT_NE(log.find("order-2 mesh:"), std::string::npos) << log;
+    EXPECT_EQ(run(testing::cli_path() + " check " + out, &log), 0) << log;
+    const GmshDump o = gmsh_dump(out);
+    EXPECT_EQ(nb_not_positive(o), 0);
+    int on_surface = 0;
+    double worst = 0;
+    for (const auto& [tag, e] : o.elements) {
+      if (std::get<0>(e) != 9) continue;  // tri6 on the sphere
+      const auto& nd = std::get<3>(e);
+      for (int k = 3; k < 6; ++k) {
+        const auto p = xyz_of(o, nd[k]);
+        const double r =
+            std::sqrt(std::pow(p[0] - 0.1, 2) + std::pow(p[1] - 0.2, 2) + std::pow(p[2] - 0.3, 2));
+        worst = std::max(worst, std::abs(r - 1));
+        ++on_surface;
+      }
+    }
+    EXPECT_GT(on_surface, 0);
+    EXPECT_LT(worst, 1e-9) << flags;
+    EXPECT_LT(max_interior_offset(o), 1e-12);
+  }
+}
+
+TEST(Order2, CheckReportsAnInvertedTet10) {
+  const std::string dir = testing::temp_dir();
+  const std::string msh = order2_box_msh(dir);
+  const std::string bad = dir + "/bad.msh";
+  {
+    // Move one interior mid-edge node of a tet10 far through the tet.
+    GmshSession session;
+    gmsh::open(msh);
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(11, tags, nodes);
+    ASSERT_FALSE(tags.empty());
+    std::vector<std::size_t> interior;
+    std::vector<double> ixyz, ipar;
+    gmsh::model::mesh::getNodes(interior, ixyz, ipar, 3, -1, false, false);
+    const std::set<std::size_t> inside(interior.begin(), interior.end());
+    bool moved = false;
+    for (std::size_t e = 0; e < tags.size() && !moved; ++e) {
+      if (!inside.count(nodes[10 * e + 4])) continue;
+      std::vector<double> c, p, opposite, q;
+      gmsh::model::mesh::getNode(nodes[10 * e + 4], c, p);
+      gmsh::model::mesh::getNode(nodes[10 * e + 3], opposite, q);
+      for (int k = 0; k < 3; ++k) c[k] += 1.5 * (opposite[k] - c[k]);
+      gmsh::model::mesh::setNode(nodes[10 * e + 4], c, {});
+      moved = true;
+    }
+    ASSERT_TRUE(moved);
+    gmsh::write(bad);
+    gmsh::model::remove();
+  }
+  std::string log;
+  EXPECT_EQ(run(testing::cli_path() + " check " + msh, &log), 0) << log;
+  EXPECT_NE(log.find("order 2"), std::string::npos) << log;
+  EXPECT_EQ(run(testing::cli_path() + " check " + bad, &log), 5) << log;
+  EXPECT_NE(log.find("order-2 tetrahedra are not positive"), std::string::npos) << log;
+}
+
+TEST(Order2, TwoDimensionalOrder2IsRefusedWithAHint) {
+  const std::string dir = testing::temp_dir();
+  const std::string geo = write_geo(
+      dir, "sq.geo",
+      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 1, 1};\nMesh.MeshSizeMax = 0.3;\n"
+      "Mesh.ElementOrder = 2;\n");
+  try {
+    read_mesh(geo);
+    FAIL() << "a 2D order-2 mesh was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("order-2"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cvtmesh
