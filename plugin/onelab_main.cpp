@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "plugin/gmsh_inprocess.h"
-#include "core/io/camera_cut.h"
+#include "core/io/quality_view_geo.h"
 #include "core/quality/quality_fields.h"
 #include "core/quality/quality_histogram.h"
 #include "core/quality/quality_stats.h"
@@ -125,34 +125,7 @@ std::string load_script(const MeshData& data, const std::string& path,
   s += "Delete Model;\nMerge \"" + path + "\";\n";
   if (fields.empty()) return s;
   s += "cvt_q = PostProcessing.NbViews - " + std::to_string(fields.size()) + ";\n";
-  double lo = 0, hi = 0;
-  bool any = false;
-  for (double v : fields.front().values)
-    if (std::isfinite(v)) {
-      lo = any ? std::min(lo, v) : v;
-      hi = any ? std::max(hi, v) : v;
-      any = true;
-    }
-  if (hi <= lo) hi = lo + 1e-6;
-  char buf[160];
-  std::snprintf(buf, sizeof buf,
-                "View[cvt_q].RangeType = 2;\nView[cvt_q].CustomMin = %.17g;\n"
-                "View[cvt_q].CustomMax = %.17g;\n",
-                lo, hi);
-  s += buf;
-  for (std::size_t v = 1; v < fields.size(); ++v)
-    s += "View[cvt_q + " + std::to_string(v) + "].Visible = 0;\n";
-  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
-    std::array<double, 3> lo3, hi3;
-    for (int k = 0; k < 3; ++k) lo3[k] = hi3[k] = data.tet.point(0)[k];
-    for (int v = 0; v < data.tet.nb_vertices(); ++v)
-      for (int k = 0; k < 3; ++k) {
-        lo3[k] = std::min(lo3[k], data.tet.point(v)[k]);
-        hi3[k] = std::max(hi3[k], data.tet.point(v)[k]);
-      }
-    s += camera_cut_geo({0.5 * (lo3[0] + hi3[0]), 0.5 * (lo3[1] + hi3[1]), 0.5 * (lo3[2] + hi3[2])},
-                        "cvt_q");
-  }
+  s += quality_view_geo(data, fields, "cvt_q");
   if (!histograms.empty()) s += histogram_script(histograms);
   return s;
 }

@@ -14,10 +14,10 @@
 #include <map>
 #include <vector>
 
-#include "core/io/camera_cut.h"
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/quality_view_geo.h"
 #include "core/io/read_mesh.h"
 #include "core/io/select_msh_elements.h"
 #include "core/io/tetgen_io.h"
@@ -127,40 +127,14 @@ constexpr const char* kOptMarker = "// Written by cvtmesh";
 std::string quality_opt(const MeshData& data, const std::string& path,
                         const std::vector<ElementField>& fields) {
   double lo = 0, hi = 0;
-  bool any = false;
-  for (double v : fields.front().values)
-    if (std::isfinite(v)) {
-      lo = any ? std::min(lo, v) : v;
-      hi = any ? std::max(hi, v) : v;
-      any = true;
-    }
-  if (hi <= lo) hi = lo + 1e-6;
+  finite_range(fields.front(), lo, hi);
   char range[128];
   std::snprintf(range, sizeof range, "%.6g, %.6g", lo, hi);
-  std::string s = std::string(kOptMarker) + " with " + path +
-                  "; Gmsh merges it when it opens that file.\n// The view \"" +
-                  fields.front().name + "\" alone, coloured over the range of its values [" +
-                  range + "].\n";
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "View[0].Visible = 1;\nView[0].RangeType = 2;\nView[0].CustomMin = %.17g;\n"
-                "View[0].CustomMax = %.17g;\nView[0].SaturateValues = 1;\n",
-                lo, hi);
-  s += buf;
-  for (std::size_t v = 1; v < fields.size(); ++v)
-    s += "View[" + std::to_string(v) + "].Visible = 0;\n";
-  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
-    std::array<double, 3> lo3, hi3;
-    for (int k = 0; k < 3; ++k) lo3[k] = hi3[k] = data.tet.point(0)[k];
-    for (int v = 0; v < data.tet.nb_vertices(); ++v)
-      for (int k = 0; k < 3; ++k) {
-        lo3[k] = std::min(lo3[k], data.tet.point(v)[k]);
-        hi3[k] = std::max(hi3[k], data.tet.point(v)[k]);
-      }
-    s += camera_cut_geo({0.5 * (lo3[0] + hi3[0]), 0.5 * (lo3[1] + hi3[1]), 0.5 * (lo3[2] + hi3[2])},
-                        "0");
-  }
-  return s;
+  return std::string(kOptMarker) + " with " + path +
+         "; Gmsh merges it when it opens that file.\n// The view \"" + fields.front().name +
+         "\" alone, coloured over the range of its values [" + range + "].\n" +
+         "View[0].Visible = 1;\nView[0].SaturateValues = 1;\n" +
+         quality_view_geo(data, fields, "0");
 }
 
 bool is_our_opt(const std::string& opt) {
