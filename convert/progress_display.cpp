@@ -67,7 +67,13 @@ ProgressDisplay ProgressDisplay::for_stderr() {
     if (std::strcmp(e, "terminal") == 0) m = Mode::kTerminal;
   }
   if (g.quiet) m = Mode::kQuiet;
-  return ProgressDisplay(m, g.verbose);
+  ProgressDisplay d(m, g.verbose);
+  if (const char* e = std::getenv("CVTMESH_PROGRESS_INTERVAL")) {
+    char* end = nullptr;
+    const double s = std::strtod(e, &end);
+    if (end != e && s >= 0 && s <= 60) d.min_interval_ = s;
+  }
+  return d;
 }
 
 void ProgressDisplay::begin(const std::string& phase, const std::string& detail) {
@@ -165,7 +171,7 @@ std::string ProgressDisplay::line() const {
 void ProgressDisplay::show(bool force) {
   if (mode_ != Mode::kTerminal || verbose_) return;
   const auto now = std::chrono::steady_clock::now();
-  if (!force && drawn_ && seconds_between(last_draw_, now) < 0.1) return;  // at most 10 per second
+  if (!force && drawn_ && seconds_between(last_draw_, now) < min_interval_) return;  // 10 per s
   last_draw_ = now;
   std::string l = line();
   winsize ws{};

@@ -49,6 +49,7 @@ class ProgressDisplay {
   std::FILE* out_;
   std::string phase_, detail_;  // current phase ("" = none) and its text
   bool drawn_ = false;          // terminal: a line is on screen, not ended
+  double min_interval_ = 0.1;   // terminal: seconds between redraws (CVTMESH_PROGRESS_INTERVAL)
   std::chrono::steady_clock::time_point start_, last_draw_;
   // Lloyd: (seconds since the phase began, log10 D) of the iterations, for the ETA.
   std::vector<std::pair<double, double>> history_;
