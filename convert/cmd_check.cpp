@@ -15,50 +15,49 @@ void register_check(CLI::App& app) {
                                    "check a mesh: positive orientation, symmetric adjacency, "
                                    "closed boundary, interfaces present");
   add_input(c, *in);
-  commands().push_back({c, [in] {
-                          // read_mesh already refuses inverted/flat elements and open meshes with a
-                          // clear message; what reaches here is checked again in full.
-                          const MeshData d = read_mesh(in->path, in->to_read_options());
-                          MeshCheck r = d.dim == 3 ? check_mesh(d.tet) : check_mesh(d.tri);
-                          const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
-                          // Structure: a self-intersecting boundary is invalid; coincident
-                          // nodes (parts in contact) are reported as a warning.
-                          if (d.dim == 3) {
-                            const StructuralDefects s = find_structural_defects(d.tet);
-                            const auto lines = s.describe(d.tet);
-                            for (std::size_t i = 0; i < lines.size(); ++i) {
-                              const bool intersect = i == 0 && !s.intersecting_tris.empty();
-                              if (intersect) {
-                                r.ok = false;
-                                r.problems.push_back(lines[i]);
-                              } else {
-                                info() << in->path << ": warning: " << lines[i] << "\n";
-                              }
-                            }
-                          }
-                          // Order 2: every tet10 positive as the file places its nodes.
-                          const bool order2 = d.dim == 3 && d.model().high_order.order == 2;
-                          if (order2) {
-                            const MidEdgePlacement p = place_mid_edge_nodes(d.tet, {}, false);
-                            if (p.nb_invalid) {
-                              r.ok = false;
-                              r.problems.push_back(
-                                  std::to_string(p.nb_invalid) +
+  commands().push_back(
+      {c, [in] {
+         // read_mesh already refuses inverted/flat elements and open meshes with a
+         // clear message; what reaches here is checked again in full.
+         const MeshData d = read_mesh(in->path, in->to_read_options());
+         MeshCheck r = d.dim == 3 ? check_mesh(d.tet) : check_mesh(d.tri);
+         const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
+         // Structure: a self-intersecting boundary is invalid; coincident
+         // nodes (parts in contact) are reported as a warning.
+         if (d.dim == 3) {
+           const StructuralDefects s = find_structural_defects(d.tet);
+           const auto lines = s.describe(d.tet);
+           for (std::size_t i = 0; i < lines.size(); ++i) {
+             const bool intersect = i == 0 && !s.intersecting_tris.empty();
+             if (intersect) {
+               r.ok = false;
+               r.problems.push_back(lines[i]);
+             } else {
+               info() << in->path << ": warning: " << lines[i] << "\n";
+             }
+           }
+         }
+         // Order 2: every tet10 positive as the file places its nodes.
+         const bool order2 = d.dim == 3 && d.model().high_order.order == 2;
+         if (order2) {
+           const MidEdgePlacement p = place_mid_edge_nodes(d.tet, {}, false);
+           if (p.nb_invalid) {
+             r.ok = false;
+             r.problems.push_back(std::to_string(p.nb_invalid) +
                                   " order-2 tetrahedra are not positive with their mid-edge nodes "
                                   "(a straight sub-tet or the Jacobian at a node is not positive)");
-                            }
-                          }
-                          if (r.ok) {
-                            std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "") << n
-                                      << (d.dim == 3 ? " tetrahedra" : " triangles") << ", "
-                                      << (d.dim == 3 ? d.tet.nb_vertices() : d.tri.nb_vertices())
-                                      << " vertices)\n";
-                            return 0;
-                          }
-                          std::cout << in->path << ": INVALID\n";
-                          for (const auto& p : r.problems) std::cout << "  " << p << "\n";
-                          return kExitCheckFailed;
-                        }});
+           }
+         }
+         if (r.ok) {
+           std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "") << n
+                     << (d.dim == 3 ? " tetrahedra" : " triangles") << ", "
+                     << (d.dim == 3 ? d.tet.nb_vertices() : d.tri.nb_vertices()) << " vertices)\n";
+           return 0;
+         }
+         std::cout << in->path << ": INVALID\n";
+         for (const auto& p : r.problems) std::cout << "  " << p << "\n";
+         return kExitCheckFailed;
+       }});
 }
 
 }  // namespace cvtmesh::cli

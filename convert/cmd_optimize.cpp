@@ -83,7 +83,8 @@ void register_optimize(CLI::App& app) {
          // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.
          if (d.dim == 3 && d.model().high_order.order == 2) {
            MidEdgePlacement& p = d.model().high_order.placed;
-           p = place_mid_edge_nodes(d.tet, cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
+           p = place_mid_edge_nodes(d.tet,
+                                    cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
            r.notes.push_back(mid_edge_summary(p));
          }
          cad.reset();  // the writer starts from a clean Gmsh

@@ -53,9 +53,10 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options = {});
 // The same in three steps, for a caller that must keep the Gmsh calls in one thread and run the
 // optimization in another (the GUI). gmsh_read_current meshes the model first if asked to,
 // restores the boundary elements a .msh saved with physical groups lacks (add_missing_facets: they
-// are added to the current model) and returns its mesh; gmsh_write_back replaces the current model's mesh by data, removes the stale
-// quality views of an earlier run (and the histogram, stale or not) and adds new ones if asked to.
-// Gmsh must not be used by anything else between the two calls.
+// are added to the current model) and returns its mesh; gmsh_write_back replaces the current
+// model's mesh by data, removes the stale quality views of an earlier run (and the histogram, stale
+// or not) and adds new ones if asked to. Gmsh must not be used by anything else between the two
+// calls.
 MeshData gmsh_read_current(const GmshOptimizeOptions& options);
 GmshOptimizeResult gmsh_write_back(const MeshData& data, const OptimizeResult& result,
                                    const GmshOptimizeOptions& options);

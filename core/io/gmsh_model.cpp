@@ -36,34 +36,40 @@ std::string type_name(int type) {
   return name;
 }
 
-int nodes_per_element_of(int type) {
+// Gmsh's order and node count of an element type (order 1, 0 nodes if Gmsh does not know it).
+struct TypeProperties {
+  int order = 1, nodes = 0;
+};
+TypeProperties type_properties(int type) {
   std::string name;
-  int dim = 0, order = 1, nn = 0, npn = 0;
+  int dim = 0, npn = 0;
+  TypeProperties p;
   std::vector<double> lc;
   try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, nn, lc, npn);
+    gmsh::model::mesh::getElementProperties(type, name, dim, p.order, p.nodes, lc, npn);
   } catch (...) {
   }
-  return nn;
+  return p;
+}
+
+int nodes_per_element_of(int type) {
+  return type_properties(type).nodes;
 }
 int nodes_per_element(int type) {
   switch (type) {
-    case 8: return 3;
-    case 9: return 6;
-    case 11: return 10;
-    default: return nodes_per_element_of(type);
+    case 8:
+      return 3;
+    case 9:
+      return 6;
+    case 11:
+      return 10;
+    default:
+      return nodes_per_element_of(type);
   }
 }
 
 int type_order(int type) {
-  std::string name;
-  int dim = 0, order = 1, nn = 0, npn = 0;
-  std::vector<double> lc;
-  try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, nn, lc, npn);
-  } catch (...) {
-  }
-  return order;
+  return type_properties(type).order;
 }
 
 // Order-2 simplices and their linear counterparts: line3 (8) -> line (1), tri6 (9) -> triangle
@@ -73,17 +79,20 @@ int linear_type(int type) {
 }
 int corners_of(int type) {
   switch (linear_type(type)) {
-    case 1: return 2;
-    case 2: return 3;
-    case 4: return 4;
-    default: return nodes_per_element_of(type);
+    case 1:
+      return 2;
+    case 2:
+      return 3;
+    case 4:
+      return 4;
+    default:
+      return nodes_per_element_of(type);
   }
 }
 // Gmsh's order of the mid-edge nodes (after the corners): line3 (0,1); tri6 (0,1) (1,2) (2,0);
 // tet10 (0,1) (1,2) (2,0) (3,0) (3,2) (3,1).
 const std::vector<std::pair<int, int>>& mid_edge_table(int type) {
-  static const std::vector<std::pair<int, int>> line3 = {{0, 1}},
-                                                tri6 = {{0, 1}, {1, 2}, {2, 0}},
+  static const std::vector<std::pair<int, int>> line3 = {{0, 1}}, tri6 = {{0, 1}, {1, 2}, {2, 0}},
                                                 tet10 = {{0, 1}, {1, 2}, {2, 0},
                                                          {3, 0}, {3, 2}, {3, 1}},
                                                 none;
@@ -567,8 +576,7 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
     mid = mid_edge_nodes_for(data.tet);
     for (std::size_t t : info.high_order.tags) floor = std::max(floor, t);
   }
-  const auto ntags =
-      node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv, floor);
+  const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv, floor);
   // Mid-edge node tags: the input's where the edge is the input's, fresh ones above every other.
   std::vector<std::size_t> mid_tags(mid.tags.size());
   if (order2) {

@@ -12,9 +12,9 @@ namespace cvtmesh {
 
 // Where the nodes of one written mesh go, edge by edge (place_mid_edge_nodes).
 struct MidEdgePlacement {
-  std::vector<int> edges;         // #M by 2 vertex ids (0-based, smaller first), sorted by pair
-  std::vector<std::size_t> tags;  // #M: the input's node tag for that edge, or 0 (a new edge)
-  std::vector<double> xyz;        // #M by 3
+  std::vector<int> edges;          // #M by 2 vertex ids (0-based, smaller first), sorted by pair
+  std::vector<std::size_t> tags;   // #M: the input's node tag for that edge, or 0 (a new edge)
+  std::vector<double> xyz;         // #M by 3
   std::vector<VertexClass> where;  // #M: the entity the node lies on (curve, surface or volume)
   std::uint64_t fingerprint = 0;   // mid_edge_fingerprint of the mesh it was placed for
   // How each node was placed (they add up to #M).

@@ -450,9 +450,10 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
     };
     const auto crossing = find_surface_intersections(mesh.xyz, live_tris(mesh), 1);
     if (!crossing.empty() && find_surface_intersections(input.xyz, live_tris(input), 1).empty())
-      throw InvariantError("the free boundary made the boundary surface self-intersect (first: "
-                           "boundary triangles " + std::to_string(crossing[0][0]) + " and " +
-                           std::to_string(crossing[0][1]) + ")");
+      throw InvariantError(
+          "the free boundary made the boundary surface self-intersect (first: "
+          "boundary triangles " +
+          std::to_string(crossing[0][0]) + " and " + std::to_string(crossing[0][1]) + ")");
   }
   r.boundary_free = true;
   r.boundary_geometry = b->geometry->kind();

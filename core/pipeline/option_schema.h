@@ -53,7 +53,7 @@ struct OptionSpec {
   // strings: a value other than the choices is the path of a file the front end reads (sizing:
   // OptimizeOptions::sizing_reference); what it holds is checked by the reader, not here.
   bool or_path = false;
-  std::string help;                  // one sentence, no default or range (added by describe)
+  std::string help;  // one sentence, no default or range (added by describe)
 };
 
 // The whole schema, in the order front ends list it.

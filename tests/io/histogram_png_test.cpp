@@ -154,7 +154,8 @@ TEST_F(HistogramPng, IsAPngOfTheSvgSizeWithTheSeriesDrawn) {
   std::size_t white = 0, dark = 0, blue = 0, red = 0;
   for (std::uint32_t c : p.rgb) {
     white += c == 0xffffff;
-    dark += (c >> 16) < 0x80 && ((c >> 8) & 0xff) < 0x80 && (c & 0xff) < 0x80;  // black, antialiased
+    dark +=
+        (c >> 16) < 0x80 && ((c >> 8) & 0xff) < 0x80 && (c & 0xff) < 0x80;  // black, antialiased
     blue += c == 0x1f77b4;
     red += c == 0xd62728;
   }
