@@ -97,7 +97,9 @@ void define_panel(OnelabTree& tree, int dim, const PanelPreset& preset) {
   for (const OptionSpec& s : option_schema()) {
     if (s.panel.empty() || s.name == "method" || s.name == "sizing") continue;
     if (!(s.dims & (dim == 2 ? kDim2 : kDim3))) continue;
-    OnelabParam p = input(param_name(s), value_number(s, OptimizeOptions{}), describe(s));
+    // The dimension's own defaults (the -1 of max_iterations and tolerance resolved).
+    OnelabParam p =
+        input(param_name(s), value_number(s, resolve(OptimizeOptions{}, dim)), describe(s));
     if (std::isfinite(s.min)) p.min = s.min;
     if (std::isfinite(s.max)) p.max = s.max;
     if (!std::holds_alternative<double OptimizeOptions::*>(s.field)) p.step = 1;

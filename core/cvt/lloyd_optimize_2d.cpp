@@ -56,7 +56,8 @@ class Lloyd2dProblem {
   // The CVT energy F of the current mesh (all cells).
   double energy() const {
     double e = 0;
-    for (const VoronoiCell2d& c : voronoi_centroids2d(mesh_, density_)) e += c.energy;
+    for (const VoronoiCell2d& c : voronoi_centroids2d(mesh_, density_, sizing_.thread_safe()))
+      e += c.energy;
     return e;
   }
 
@@ -87,7 +88,8 @@ class Lloyd2dProblem {
     LloydStep s;
     s.hop = hop_;
     s.nb_free = static_cast<int>(free_.size());
-    const std::vector<VoronoiCell2d> cells = voronoi_centroids2d(mesh_, density_);
+    const std::vector<VoronoiCell2d> cells =
+        voronoi_centroids2d(mesh_, density_, sizing_.thread_safe());
     for (const VoronoiCell2d& c : cells) s.energy += c.energy;
     const std::size_t n = free_.size();
     std::vector<double> z(2 * n), c(2 * n);
@@ -150,7 +152,7 @@ class Lloyd2dProblem {
     const std::size_t n = free_.size();
     s.nb_free = static_cast<int>(n);
     if (!have_cells_) {  // a first point (the start, or after a plain Lloyd step)
-      cells_ = voronoi_centroids2d(mesh_, density_), have_cells_ = true;
+      cells_ = voronoi_centroids2d(mesh_, density_, sizing_.thread_safe()), have_cells_ = true;
       lbfgs_.tell(lbfgs_point(cells_));
     }
     s.energy = lbfgs_.current().energy;
@@ -181,7 +183,8 @@ class Lloyd2dProblem {
           p[0] = target[2 * k], p[1] = target[2 * k + 1];
         }
         cdt2d_remesh(mesh_);
-        std::vector<VoronoiCell2d> trial = voronoi_centroids2d(mesh_, density_);
+        std::vector<VoronoiCell2d> trial =
+            voronoi_centroids2d(mesh_, density_, sizing_.thread_safe());
         verdict = lbfgs_.tell(lbfgs_point(trial));
         if (verdict == LbfgsVerdict::kAccepted)
           cells_ = std::move(trial);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "core/util/error.h"
 
@@ -105,6 +107,29 @@ SizingField2d::SizingField2d(const TriMesh2& mesh, const SizingField2dOptions& o
   bg_h_.resize(nv);
   for (int v = 0; v < nv; ++v) bg_h_[v] = cnt[v] ? sum[v] / cnt[v] : 0;
   if (o.smoothing_passes > 0) smooth_vertex_sizes(bg, o.smoothing_passes, bg_h_);
+  // Triangle neighbours (across the edge opposite each corner) for the walk in size().
+  {
+    const int ntri = static_cast<int>(bg_tris_.size() / 3);
+    bg_adj_.assign(bg_tris_.size(), -1);
+    std::unordered_map<std::uint64_t, int> open;  // directed edge (a, b) -> 3 t + k
+    open.reserve(bg_tris_.size());
+    auto key = [](int a, int b) {
+      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+             static_cast<std::uint32_t>(b);
+    };
+    for (int t = 0; t < ntri; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int a = bg_tris_[3 * t + (k + 1) % 3], b = bg_tris_[3 * t + (k + 2) % 3];
+        const auto it = open.find(key(b, a));
+        if (it != open.end()) {
+          bg_adj_[3 * t + k] = it->second / 3;
+          bg_adj_[it->second] = t;
+          open.erase(it);
+        } else {
+          open.emplace(key(a, b), 3 * t + k);
+        }
+      }
+  }
   // Bucket grid of about one triangle per cell.
   const int nt = static_cast<int>(bg_tris_.size() / 3);
   double hi[2] = {-std::numeric_limits<double>::infinity(),
@@ -161,7 +186,46 @@ double SizingField2d::size(const double* x) const {
     return h;
   }
   // P1 interpolation in the background triangle containing x (the best candidate of the
-  // nearest non-empty bucket ring if x is outside every triangle).
+  // nearest non-empty bucket ring if x is outside every triangle). The quadrature points of one
+  // Voronoi piece lie close together, so the triangle that last held a point strictly inside
+  // (per thread) is tried first; a point strictly inside one triangle is inside no other, so the
+  // early exits return the value the full scan would (the scan's best is that triangle).
+  thread_local const SizingField2d* hint_owner = nullptr;
+  thread_local int hint = -1;
+  const int nt = static_cast<int>(bg_tris_.size() / 3);
+  auto bary = [&](int t, double l[3]) {
+    const int* tv = &bg_tris_[3 * t];
+    const double* a = &bg_xy_[2 * tv[0]];
+    const double* b = &bg_xy_[2 * tv[1]];
+    const double* d = &bg_xy_[2 * tv[2]];
+    const double det = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    if (det == 0) return false;
+    l[1] = ((x[0] - a[0]) * (d[1] - a[1]) - (x[1] - a[1]) * (d[0] - a[0])) / det;
+    l[2] = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / det;
+    l[0] = 1 - l[1] - l[2];
+    return true;
+  };
+  auto interpolate = [&](int t, double l0, double l1, double l2) {
+    const int* tv = &bg_tris_[3 * t];
+    l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
+    const double s = l0 + l1 + l2;
+    return (l0 * bg_h_[tv[0]] + l1 * bg_h_[tv[1]] + l2 * bg_h_[tv[2]]) / s;
+  };
+  if (hint_owner == this && hint >= 0 && hint < nt) {
+    // Walk from the hint towards x across the edge of the most negative barycentric coordinate
+    // (a few steps: the next quadrature point is near the last one).
+    int t = hint;
+    for (int step = 0; step < 8 && t >= 0; ++step) {
+      double l[3];
+      if (!bary(t, l)) break;
+      const int k = l[0] <= l[1] && l[0] <= l[2] ? 0 : l[1] <= l[2] ? 1 : 2;
+      if (l[k] > 0) {
+        hint = t;
+        return interpolate(t, l[0], l[1], l[2]);
+      }
+      t = bg_adj_[3 * t + k];
+    }
+  }
   const int ci = std::clamp(static_cast<int>((x[0] - lo_[0]) / cell_[0]), 0, nx_ - 1);
   const int cj = std::clamp(static_cast<int>((x[1] - lo_[1]) / cell_[1]), 0, ny_ - 1);
   double best = -std::numeric_limits<double>::infinity(), value = 0;
@@ -171,21 +235,17 @@ double SizingField2d::size(const double* x) const {
         if (std::max(std::abs(i - ci), std::abs(j - cj)) != ring) continue;
         const int c = j * nx_ + i;
         for (int k = bucket_start_[c]; k < bucket_start_[c + 1]; ++k) {
-          const int* tv = &bg_tris_[3 * bucket_tris_[k]];
-          const double* a = &bg_xy_[2 * tv[0]];
-          const double* b = &bg_xy_[2 * tv[1]];
-          const double* d = &bg_xy_[2 * tv[2]];
-          const double det = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-          if (det == 0) continue;
-          double l1 = ((x[0] - a[0]) * (d[1] - a[1]) - (x[1] - a[1]) * (d[0] - a[0])) / det;
-          double l2 = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / det;
-          double l0 = 1 - l1 - l2;
-          const double m = std::min({l0, l1, l2});
+          const int t = bucket_tris_[k];
+          double l[3];
+          if (!bary(t, l)) continue;
+          const double m = std::min({l[0], l[1], l[2]});
           if (m <= best) continue;
           best = m;
-          l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
-          const double s = l0 + l1 + l2;
-          value = (l0 * bg_h_[tv[0]] + l1 * bg_h_[tv[1]] + l2 * bg_h_[tv[2]]) / s;
+          value = interpolate(t, l[0], l[1], l[2]);
+          if (m > 0) {
+            hint_owner = this, hint = t;
+            return value;
+          }
         }
       }
     if (best >= -1e-12 || (best > -std::numeric_limits<double>::infinity() && ring >= 1)) break;

@@ -38,6 +38,8 @@ class SizingField2d {
   }
   // True for "uniform" (rho is constant: integrals can be exact).
   bool is_uniform() const { return kind_ == Kind::kUniform; }
+  // size() may be called from several threads at once (not so for a user's size function).
+  bool thread_safe() const { return kind_ != Kind::kFunction; }
 
  private:
   enum class Kind { kUniform, kFunction, kMesh };
@@ -48,6 +50,7 @@ class SizingField2d {
   std::vector<double> bg_xy_;
   std::vector<int> bg_tris_;
   std::vector<double> bg_h_;
+  std::vector<int> bg_adj_;  // 3 per triangle: the neighbour across the edge opposite corner k
   double lo_[2] = {0, 0}, cell_[2] = {1, 1};
   int nx_ = 1, ny_ = 1;
   std::vector<int> bucket_start_, bucket_tris_;

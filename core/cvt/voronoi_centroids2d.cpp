@@ -79,8 +79,9 @@ void integrate(const std::vector<Pt>& poly, const double* z,
 
 }  // namespace
 
-std::vector<VoronoiCell2d> voronoi_centroids2d(
-    const TriMesh2& mesh, const std::function<double(const double*)>& density) {
+std::vector<VoronoiCell2d> voronoi_centroids2d(const TriMesh2& mesh,
+                                               const std::function<double(const double*)>& density,
+                                               bool parallel) {
   const int nv = mesh.nb_vertices(), nt = mesh.nb_tris();
   std::vector<VoronoiCell2d> cells(nv);
 
@@ -124,13 +125,22 @@ std::vector<VoronoiCell2d> voronoi_centroids2d(
         for (int k = 0; k < 3; ++k) around[fill[mesh.tris[3 * t + k]]++] = t;
   }
 
-  std::vector<int> stamp(nt, -1), queue;
-  std::vector<Pt> region, piece, tmp;
-  for (int i = 0; i < nv; ++i) {
+  // One cell: its buffers are the caller's (one set per thread); stamp[t] == i marks triangle t
+  // as reached for cell i.
+  struct Buffers {
+    std::vector<int> stamp, queue;
+    std::vector<Pt> region, piece, tmp;
+  };
+  auto cell = [&](int i, Buffers& B) {
+    std::vector<int>& stamp = B.stamp;
+    std::vector<int>& queue = B.queue;
+    std::vector<Pt>& region = B.region;
+    std::vector<Pt>& piece = B.piece;
+    std::vector<Pt>& tmp = B.tmp;
     const double* z = mesh.point(i);
     if (start[i] == start[i + 1]) {  // not used by any triangle: an empty cell
       cells[i].centroid[0] = z[0], cells[i].centroid[1] = z[1];
-      continue;
+      return;
     }
     // Voronoi region of i.
     region.clear();
@@ -171,6 +181,19 @@ std::vector<VoronoiCell2d> voronoi_centroids2d(
     } else {
       c.centroid[0] = z[0], c.centroid[1] = z[1];
     }
+  };
+  if (!parallel) {
+    Buffers B;
+    B.stamp.assign(nt, -1);
+    for (int i = 0; i < nv; ++i) cell(i, B);
+    return cells;
+  }
+#pragma omp parallel
+  {
+    Buffers B;
+    B.stamp.assign(nt, -1);
+#pragma omp for schedule(static, 256)
+    for (int i = 0; i < nv; ++i) cell(i, B);
   }
   return cells;
 }

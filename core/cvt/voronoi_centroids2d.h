@@ -22,8 +22,10 @@ struct VoronoiCell2d {
 // another surface or across a hole). The Voronoi regions come from an unconstrained Delaunay
 // triangulation of the vertices (cdt2d); each piece (region intersected with a mesh triangle)
 // is a convex polygon. density == nullptr: rho = 1 and the integrals are exact; otherwise a
-// degree-4 quadrature on each piece.
+// degree-4 quadrature on each piece. parallel: the cells are computed by several threads
+// (OpenMP), which may call density at the same time; the result is the same as serially.
 std::vector<VoronoiCell2d> voronoi_centroids2d(
-    const TriMesh2& mesh, const std::function<double(const double*)>& density = nullptr);
+    const TriMesh2& mesh, const std::function<double(const double*)>& density = nullptr,
+    bool parallel = false);
 
 }  // namespace cvtmesh

@@ -51,15 +51,22 @@ std::vector<OptionSpec> make_schema() {
   }
   {
     OptionSpec s = number("max_iterations", "--max-iterations", &O::max_iterations, 0, 1e6,
-                          "maximum Lloyd / outer iterations", kDim23, kAllFronts);
+                          "maximum Lloyd / outer iterations (the dimension's default: 100 in "
+                          "3D, 1000 in 2D)",
+                          kDim23, kAllFronts);
     s.panel = "1Max iterations";
+    s.special = -1;
+    s.has_special = true;
     v.push_back(s);
   }
   {
     OptionSpec s = number("tolerance", "--tolerance", &O::tolerance, 0, kInf,
-                          "Lloyd stops when the mean squared relative move D is below this", kDim23,
-                          kAllFronts);
+                          "Lloyd stops when the mean squared relative move D is below this ("
+                          "the dimension's default: 1e-5 in 3D, 1e-8 in 2D)",
+                          kDim23, kAllFronts);
     s.panel = "2Tolerance";
+    s.special = -1;
+    s.has_special = true;
     v.push_back(s);
   }
   {
@@ -414,6 +421,8 @@ OptimizeOptions resolve(const OptimizeOptions& o, int dim) {
   if (r.method.empty() || (dim == 2 && r.method == default_method(3)))
     r.method = default_method(dim);
   if (r.lbfgs_memory < 0) r.lbfgs_memory = dim == 3 ? 5 : 0;
+  if (r.max_iterations < 0) r.max_iterations = dim == 3 ? 100 : 1000;
+  if (r.tolerance < 0) r.tolerance = dim == 3 ? 1e-5 : 1e-8;
   return r;
 }
 

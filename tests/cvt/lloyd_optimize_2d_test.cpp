@@ -1,6 +1,7 @@
 // Lloyd's iteration in 2D: property tests on the paper's quad and washer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -246,6 +247,62 @@ TEST(Lloyd2d, BasinHoppingNeverEndsAboveLloydsEnergy) {
   lloyd_optimize_2d(again, o, nullptr, &rep2);
   EXPECT_EQ(rep2.energy, rep.energy);
   EXPECT_EQ(again.xy, m.xy);
+}
+
+// The washer's ClusPert mesh with its Gmsh mesh as the sizing reference ("mesh" sizing): the
+// cells computed by several threads are those of one thread, bit for bit; and the size at every
+// quadrature-like point (the walk from the last triangle found) is the P1 interpolation in the
+// background triangle that contains it, found here by brute force.
+TEST(Lloyd2d, MeshSizingCellsInParallelEqualSerialAndTheLookupIsP1) {
+  const MeshData d = read_mesh(testing::geo_path("washer.geo"), {.dim = 2});
+  TriMesh2 m = d.tri;
+  perturb_2d(m, {.kind = Perturbation2d::kCluster});
+  SizingField2dOptions so;
+  so.kind = "mesh";
+  so.background = &d.tri;
+  const SizingField2d sizing(m, so);
+  ASSERT_TRUE(sizing.thread_safe());
+  const auto density = [&](const double* x) { return sizing.density(x); };
+  const auto serial = voronoi_centroids2d(m, density, false);
+  const auto parallel = voronoi_centroids2d(m, density, true);
+  ASSERT_EQ(serial.size(), parallel.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < serial.size(); ++i)
+    differ += serial[i].mass != parallel[i].mass || serial[i].energy != parallel[i].energy ||
+              serial[i].centroid[0] != parallel[i].centroid[0] ||
+              serial[i].centroid[1] != parallel[i].centroid[1];
+  EXPECT_EQ(differ, 0);
+  // Vertex sizes of the background as size() computes them are not exposed: compare with the
+  // P1 interpolation of size() at the background's own vertices (exact at a vertex).
+  const TriMesh2& bg = d.tri;
+  std::vector<double> hv(bg.nb_vertices());
+  for (int v = 0; v < bg.nb_vertices(); ++v) hv[v] = sizing.size(bg.point(v));
+  int wrong = 0, inside = 0;
+  for (int t = 0; t < m.nb_tris(); ++t)  // points along the optimized mesh's triangles
+    for (int q = 0; q < 3; ++q) {
+      const int* tv = &m.tris[3 * t];
+      const double w[3] = {q == 0 ? 0.6 : 0.2, q == 1 ? 0.6 : 0.2, q == 2 ? 0.6 : 0.2};
+      double x[2] = {0, 0};
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 2; ++c) x[c] += w[k] * m.point(tv[k])[c];
+      for (int b = 0; b < bg.nb_tris(); ++b) {
+        const int* bv = &bg.tris[3 * b];
+        const double* a = bg.point(bv[0]);
+        const double* e = bg.point(bv[1]);
+        const double* f = bg.point(bv[2]);
+        const double det = (e[0] - a[0]) * (f[1] - a[1]) - (e[1] - a[1]) * (f[0] - a[0]);
+        const double l1 = ((x[0] - a[0]) * (f[1] - a[1]) - (x[1] - a[1]) * (f[0] - a[0])) / det;
+        const double l2 = ((e[0] - a[0]) * (x[1] - a[1]) - (e[1] - a[1]) * (x[0] - a[0])) / det;
+        const double l0 = 1 - l1 - l2;
+        if (std::min({l0, l1, l2}) <= 1e-9) continue;
+        ++inside;
+        const double want = l0 * hv[bv[0]] + l1 * hv[bv[1]] + l2 * hv[bv[2]];
+        if (std::fabs(sizing.size(x) - want) > 1e-12 * want) ++wrong;
+        break;
+      }
+    }
+  EXPECT_GT(inside, m.nb_tris());
+  EXPECT_EQ(wrong, 0);
 }
 
 }  // namespace

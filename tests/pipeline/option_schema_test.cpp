@@ -136,6 +136,15 @@ TEST(OptionSchema, ResolveGivesEachDimensionItsDefaults) {
   EXPECT_EQ(resolve(OptimizeOptions{}, 2).method, "cvdt");  // the 3D default name in 2D
   EXPECT_EQ(resolve(OptimizeOptions{}, 3).lbfgs_memory, 5);
   EXPECT_EQ(resolve(OptimizeOptions{}, 2).lbfgs_memory, 0);
+  // Lloyd's stop: 3D as before; 2D converges further (its moves stay small long before the CVT).
+  EXPECT_EQ(resolve(OptimizeOptions{}, 3).max_iterations, 100);
+  EXPECT_EQ(resolve(OptimizeOptions{}, 3).tolerance, 1e-5);
+  EXPECT_EQ(resolve(OptimizeOptions{}, 2).max_iterations, 1000);
+  EXPECT_EQ(resolve(OptimizeOptions{}, 2).tolerance, 1e-8);
+  OptimizeOptions set;  // a value the user gave is kept
+  set.max_iterations = 7, set.tolerance = 0;
+  EXPECT_EQ(resolve(set, 2).max_iterations, 7);
+  EXPECT_EQ(resolve(set, 2).tolerance, 0);
   OptimizeOptions plain;
   apply_preset("plain (paper)", plain);
   EXPECT_EQ(plain.lbfgs_memory, 0);
@@ -162,7 +171,7 @@ TEST(OptionSchema, OptimizeRefusesABadValueBeforeTouchingTheMesh) {
   o.max_iterations = -3;
   EXPECT_THROW(optimize(d, o), OptionError);
   o = {};
-  o.tolerance = -1;
+  o.tolerance = -2;  // -1 means the dimension's default
   EXPECT_THROW(optimize(d, o), OptionError);
   EXPECT_EQ(d.tet.xyz, before);
 }

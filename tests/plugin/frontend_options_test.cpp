@@ -50,14 +50,15 @@ TEST(FrontEndOptions, ThePanelRefusesABadToleranceWithTheCoreMessage) {
   plugin::define_panel(tree, 3);
   const std::string tol = plugin::kGroup + "/2Tolerance";
   ASSERT_TRUE(tree.number(tol).has_value());
-  EXPECT_EQ(*tree.number(tol), OptimizeOptions{}.tolerance);  // the schema's default
+  // The schema's default, resolved for the panel's dimension (-1 stands for it in the API).
+  EXPECT_EQ(*tree.number(tol), resolve(OptimizeOptions{}, 3).tolerance);
   EXPECT_NO_THROW(plugin::read_panel(tree));
-  tree.params[tol].number = -1;
-  const std::string expected = core_message_for_tolerance(-1);
+  tree.params[tol].number = -2;
+  const std::string expected = core_message_for_tolerance(-2);
   ASSERT_FALSE(expected.empty());
   try {
     plugin::read_panel(tree);
-    ADD_FAILURE() << "tolerance -1 accepted by the panel";
+    ADD_FAILURE() << "tolerance -2 accepted by the panel";
   } catch (const OptionError& e) {
     EXPECT_EQ(std::string(e.what()), expected);
   }
@@ -69,10 +70,10 @@ TEST(FrontEndOptions, TheCliRefusesABadToleranceWithTheCoreMessageAndWritesNothi
   std::string log;
   const int rc =
       testing::run(testing::cli_path() + " optimize " + testing::geo_path("cube_sphere.geo") +
-                       " -o " + out + " --tolerance -1",
+                       " -o " + out + " --tolerance -2",
                    &log);
   EXPECT_EQ(rc, 2) << log;
-  EXPECT_NE(log.find(core_message_for_tolerance(-1)), std::string::npos) << log;
+  EXPECT_NE(log.find(core_message_for_tolerance(-2)), std::string::npos) << log;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

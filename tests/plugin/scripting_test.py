@@ -171,7 +171,7 @@ class InProcessScripting(unittest.TestCase):
         self.assertIn(str(e.exception), run.stderr)
         self.assertIn("relaxation (--relaxation)", str(e.exception))
         self.assertEqual(nodes(3), before)
-        for bad in ({"max_iterations": -3}, {"tolerance": -1.0}, {"max_iterations": 2.5},
+        for bad in ({"max_iterations": -3}, {"tolerance": -2.0}, {"max_iterations": 2.5},
                     {"sizing": "fancy"}):
             with self.assertRaises(cvtmesh.InputError, msg=str(bad)):
                 cvtmesh.optimize(**bad)
