@@ -32,7 +32,6 @@
 #include "core/pipeline/find_structural_defects.h"
 #include "core/quality/quality.h"
 #include "core/quality/time_step_guard.h"
-#include "core/mesh/find_surface_intersections.h"
 #include "core/quality/worse_than.h"
 #include "core/quality/quality_stats.h"
 #include "core/util/error.h"
@@ -441,20 +440,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   // A boundary vertex moved on the geometry can make the surface mesh cross itself (issue 14's
   // corpus: igl_armadillo): `cvtmesh check` would refuse the output. A method failure then, as a
   // broken Hausdorff bound is.
-  if (o.verify) {
-    auto live_tris = [](const TetMesh& m) {
-      std::vector<int> t;
-      for (int f = 0; f < m.nb_tris(); ++f)
-        if (m.tris[3 * f] >= 0) t.insert(t.end(), &m.tris[3 * f], &m.tris[3 * f] + 3);
-      return t;
-    };
-    const auto crossing = find_surface_intersections(mesh.xyz, live_tris(mesh), 1);
-    if (!crossing.empty() && find_surface_intersections(input.xyz, live_tris(input), 1).empty())
-      throw InvariantError(
-          "the free boundary made the boundary surface self-intersect (first: "
-          "boundary triangles " +
-          std::to_string(crossing[0][0]) + " and " + std::to_string(crossing[0][1]) + ")");
-  }
+  if (o.verify) verify_no_new_surface_crossing(input, mesh);
   r.boundary_free = true;
   r.boundary_geometry = b->geometry->kind();
   r.nb_boundary_moved = fr.nb_moved;

@@ -13,6 +13,7 @@
 
 #include "core/geometry/tet_geometry.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/find_surface_intersections.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -323,6 +324,21 @@ void verify_optimized(const TriMesh2& before, const TriMesh2& after) {
   check_model(before.model, after.model);
   check_group_boundaries<3>(before.model.groups, 2, before.tris, before.tri_region, before.adj,
                             after.tris, after.tri_region, after.adj);
+}
+
+void verify_no_new_surface_crossing(const TetMesh& before, const TetMesh& after) {
+  auto live_tris = [](const TetMesh& m) {
+    std::vector<int> t;
+    for (int f = 0; f < m.nb_tris(); ++f)
+      if (m.tris[3 * f] >= 0) t.insert(t.end(), &m.tris[3 * f], &m.tris[3 * f] + 3);
+    return t;
+  };
+  const auto crossing = find_surface_intersections(after.xyz, live_tris(after), 1);
+  if (crossing.empty() || !find_surface_intersections(before.xyz, live_tris(before), 1).empty())
+    return;
+  throw InvariantError(
+      "the free boundary made the boundary surface self-intersect (first: boundary triangles " +
+      std::to_string(crossing[0][0]) + " and " + std::to_string(crossing[0][1]) + ")");
 }
 
 }  // namespace cvtmesh

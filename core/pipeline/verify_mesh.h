@@ -30,6 +30,13 @@ struct VerifyOptions {
 void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyOptions& options);
 void verify_optimized(const TriMesh2& before, const TriMesh2& after);
 
+// A moved boundary must not cross itself where the input's did not (issue 14's corpus: a boundary
+// vertex moved on igl_armadillo's surface made two boundary triangles intersect, and `cvtmesh
+// check` refused the output). Throws InvariantError naming the first pair of live boundary
+// triangles of `after` that intersect improperly (exact: find_surface_intersections), unless the
+// input's boundary already intersected itself (then the comparison says nothing).
+void verify_no_new_surface_crossing(const TetMesh& before, const TetMesh& after);
+
 // Volume of each region, indexed by region tag (sorted by tag); a compensated sum.
 std::vector<std::pair<int, double>> region_volumes(const TetMesh& mesh);
 

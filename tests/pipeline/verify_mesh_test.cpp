@@ -190,5 +190,26 @@ TEST(VerifyOptimized, DetectsAMissingOrChangedSurfaceGroupIn2D) {
   EXPECT_THROW(verify_optimized(before, after), InvariantError);
 }
 
+// Two separate tets; moving a corner of the second into the first makes their boundaries cross:
+// refused with the pair named. A crossing the input already had is not the optimizer's doing.
+TEST(VerifyNoNewSurfaceCrossing, RefusesACrossingTheInputDidNotHave) {
+  const TetMesh input = testing::make_tet_mesh(
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {3, 0, 0}, {2, 1, 0}, {2, 0, 1}},
+      {{0, 1, 2, 3}, {4, 5, 6, 7}});
+  EXPECT_NO_THROW(verify_no_new_surface_crossing(input, input));
+  TetMesh moved = input;
+  moved.xyz[3 * 4 + 0] = 0.2, moved.xyz[3 * 4 + 1] = 0.2, moved.xyz[3 * 4 + 2] = 0.2;
+  ASSERT_TRUE(check_mesh(moved).ok);  // each tet still positive: only the surfaces cross
+  try {
+    verify_no_new_surface_crossing(input, moved);
+    ADD_FAILURE() << "a crossing boundary passed";
+  } catch (const InvariantError& e) {
+    EXPECT_NE(std::string(e.what()).find("self-intersect (first: boundary triangles"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(verify_no_new_surface_crossing(moved, moved));
+}
+
 }  // namespace
 }  // namespace cvtmesh
