@@ -605,6 +605,35 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     if (!o.never_worse) throw;
     failure = "'" + method + "' failed (" + e.what() + ")";
   }
+  // A failure of the free boundary (a bound it broke, a surface it made cross itself: issue 14's
+  // igl_armadillo) need not cost the volume's optimization: the same method with the boundary
+  // fixed comes next, then the polish alone.
+  if (!failure.empty() && !o.fix_boundary && method == "cvdt+swap+smooth") {
+    r.notes.push_back(failure);
+    failure.clear();
+    OptimizeOptions fo = oo;
+    fo.fix_boundary = true;
+    try {
+      RestoreNote rn;
+      OptimizeResult f;
+      f.method = method;
+      TetMesh m = run_method3(input, method, fo, f, ref, &rn);
+      const std::string worse = worse_than(quality_stats(m, ""), r.before);
+      if (!worse.empty()) {
+        failure = "'" + method + "' with the boundary fixed made the mesh worse too (" + worse +
+                  ")" + restore_failed(rn);
+      } else {
+        if (!rn.worse.empty()) r.notes.push_back(restore_succeeded(method, rn, r));
+        r.notes.push_back("'" + method + "' with the boundary fixed is kept instead");
+        data.tet = std::move(m);
+        r.iterations = f.iterations;
+        r.converged = f.converged;
+        r.boundary_free = false;
+      }
+    } catch (const InvariantError& e) {
+      failure = "'" + method + "' with the boundary fixed failed (" + e.what() + ")";
+    }
+  }
   if (!failure.empty()) {
     r.notes.push_back(failure);
     data.tet = input;

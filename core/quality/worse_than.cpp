@@ -23,6 +23,10 @@ std::string worse_than(const QualityStats& a, const QualityStats& b) {
     std::snprintf(buf, sizeof buf, "max %s %.2f -> %.2f degrees", angle, b.max_angle, a.max_angle);
     return buf;
   }
+  if (a.q_avg < b.q_avg) {
+    std::snprintf(buf, sizeof buf, "average Q %.4f -> %.4f", b.q_avg, a.q_avg);
+    return buf;
+  }
   return "";
 }
 

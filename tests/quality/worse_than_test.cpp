@@ -1,0 +1,30 @@
+// The "never worse than the input" criterion: each measure on its own makes a mesh worse.
+#include "core/quality/worse_than.h"
+
+#include <gtest/gtest.h>
+
+namespace cvtmesh {
+namespace {
+
+QualityStats stats(double q_min, double q_avg, double min_angle, double max_angle) {
+  QualityStats s;
+  s.q_min = q_min, s.q_avg = q_avg, s.min_angle = min_angle, s.max_angle = max_angle;
+  return s;
+}
+
+TEST(WorseThan, EachMeasureAloneMakesAMeshWorseAndEqualIsNot) {
+  const QualityStats in = stats(0.2, 0.70, 10, 160);
+  EXPECT_EQ(worse_than(in, in), "");
+  EXPECT_EQ(worse_than(stats(0.3, 0.80, 20, 150), in), "");
+  EXPECT_EQ(worse_than(stats(0.1, 0.80, 20, 150), in), "Q_min 0.2000 -> 0.1000");
+  EXPECT_EQ(worse_than(stats(0.3, 0.80, 9, 150), in), "min dihedral 10.00 -> 9.00 degrees");
+  EXPECT_EQ(worse_than(stats(0.3, 0.80, 20, 161), in), "max dihedral 160.00 -> 161.00 degrees");
+  // Issue 14: better extremes with a lower average (t15: 0.6985 -> 0.6967) are worse too.
+  EXPECT_EQ(worse_than(stats(0.3, 0.69, 20, 150), in), "average Q 0.7000 -> 0.6900");
+  QualityStats flat = in;
+  flat.nb_inverted = 1;
+  EXPECT_EQ(worse_than(flat, in), "1 inverted or flat elements");
+}
+
+}  // namespace
+}  // namespace cvtmesh
