@@ -36,8 +36,7 @@ TEST(SizingCli, WasherFromClusPertReachesThePapersTable5WithTheModelsSizing) {
   ASSERT_EQ(testing::run(cli() + " convert " + testing::geo_path("washer.geo") + " " + w, &log), 0)
       << log;
   ASSERT_EQ(testing::run(cli() + " perturb " + w + " --cluster -o " + p, &log), 0) << log;
-  ASSERT_EQ(testing::run(cli() + " optimize " + p + " --sizing " + w + " -o " + o, &log), 0)
-      << log;
+  ASSERT_EQ(testing::run(cli() + " optimize " + p + " --sizing " + w + " -o " + o, &log), 0) << log;
   const MeshData d = read_mesh(o);
   ASSERT_EQ(d.dim, 2);
   const QualityStats s = quality_stats(d.tri, "");
@@ -46,8 +45,13 @@ TEST(SizingCli, WasherFromClusPertReachesThePapersTable5WithTheModelsSizing) {
   EXPECT_GE(s.min_angle, 40.0) << log;
   EXPECT_LE(s.max_angle, 92.0) << log;
   // With the input's own sizing (the default for a mesh file) the CVT keeps the cluster: the
-  // reference is what makes the difference.
-  ASSERT_EQ(testing::run(cli() + " optimize " + p + " -o " + dir + "/own.msh", &log), 0) << log;
+  // reference is what makes the difference (at the old 2D stop, 48 iterations: converging to the
+  // 1000-iteration cap ends at Q_min 0.338 instead of 0.354, docs/reproduction-2d.md).
+  ASSERT_EQ(testing::run(cli() + " optimize " + p + " -o " + dir +
+                             "/own.msh --tolerance 1e-5 --max-iterations 100",
+                         &log),
+            0)
+      << log;
   EXPECT_LT(quality_stats(read_mesh(dir + "/own.msh").tri, "").q_min, s.q_min);
 }
 
