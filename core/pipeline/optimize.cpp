@@ -472,7 +472,7 @@ std::string restore_succeeded(const std::string& what, const RestoreNote& rn, Op
 }
 
 std::string restore_failed(const RestoreNote& rn) {
-  if (rn.worse.empty()) return "";
+  if (rn.worse.empty() || rn.stats.nb_short_before == 0) return "";  // e.g. only the average
   return "; restoring " + std::to_string(rn.stats.nb_restored) + " vertices around the " +
          std::to_string(rn.stats.nb_short_before) + " elements short of the input's worst left " +
          std::to_string(rn.stats.nb_short_after);

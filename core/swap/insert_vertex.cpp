@@ -23,6 +23,21 @@ const int* tet_of(const TetMesh& mesh, int t) {
   return &mesh.tets[4 * static_cast<std::size_t>(t)];
 }
 
+// True if tet n shares a constrained face with a tet of the cavity: adding it would put that face
+// inside the cavity, and the insertion would delete it (an embedded surface's triangle, reached
+// around the surface's free edge: t15's embedded surface lost one this way).
+bool meets_cavity_across_constrained(const TetMesh& mesh, const ConstrainedFaces& constrained,
+                                     const std::vector<int>& cavity, int n) {
+  const int* nv = tet_of(mesh, n);
+  for (int f = 0; f < 4; ++f) {
+    const int behind = mesh.adj[4 * static_cast<std::size_t>(n) + f];
+    if (behind < 0 || !in(cavity, behind / 4)) continue;
+    if (constrained.count(face_key(nv[kTetFace[f][0]], nv[kTetFace[f][1]], nv[kTetFace[f][2]])))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<int> tet_cavity(const TetMesh& mesh, const ConstrainedFaces& constrained, int t) {
@@ -33,6 +48,7 @@ std::vector<int> tet_cavity(const TetMesh& mesh, const ConstrainedFaces& constra
     if (behind < 0 || mesh.tet_region[behind / 4] != mesh.tet_region[t]) continue;
     if (constrained.count(face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]])))
       continue;
+    if (meets_cavity_across_constrained(mesh, constrained, cavity, behind / 4)) continue;
     cavity.push_back(behind / 4);
   }
   return cavity;
@@ -53,7 +69,8 @@ void grow_cavity(const TetMesh& mesh, const ConstrainedFaces& constrained, const
         continue;
       const int* nv = tet_of(mesh, n);
       if (insphere(mesh.point(nv[0]), mesh.point(nv[1]), mesh.point(nv[2]), mesh.point(nv[3]), p) >
-          0)
+              0 &&
+          !meets_cavity_across_constrained(mesh, constrained, cavity, n))
         cavity.push_back(n);
     }
   }

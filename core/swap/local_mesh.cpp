@@ -113,6 +113,27 @@ bool commit_local_mesh(TetMesh& mesh, const LocalMesh& local, const TetMesh& aft
         0)
       return false;
   }
+  // The copy's constrained triangles (its hull, the constrained faces inside it) are faces of
+  // `after`'s tets: an operation that lost one would cut the mesh or delete a surface triangle.
+  {
+    std::vector<std::array<int, 3>> faces;
+    for (int t = 0; t < after.nb_tets(); ++t) {
+      const int* tv = &after.tets[4 * static_cast<std::size_t>(t)];
+      if (tv[0] < 0) continue;
+      for (int f = 0; f < 4; ++f) {
+        std::array<int, 3> k{tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]};
+        std::sort(k.begin(), k.end());
+        faces.push_back(k);
+      }
+    }
+    std::sort(faces.begin(), faces.end());
+    for (int f = 0; f < before.nb_tris(); ++f) {
+      std::array<int, 3> k{before.tris[3 * f], before.tris[3 * f + 1], before.tris[3 * f + 2]};
+      if (k[0] < 0) continue;
+      std::sort(k.begin(), k.end());
+      if (!std::binary_search(faces.begin(), faces.end(), k)) return false;
+    }
+  }
   const auto qb = quads_of(before), qa = quads_of(after);
   SwapPlan plan;
   plan.region = local.region;

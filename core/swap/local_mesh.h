@@ -32,8 +32,10 @@ LocalMesh extract_local_mesh(const TetMesh& mesh, const ConstrainedFaces& constr
 // `after` that are not tets of `local` replace those of `local` not in `after` (apply_swap: the
 // adjacency is repaired locally; dead slots reused from *free_slots first, left dead and pushed
 // there). Checks first, changing nothing if a check fails: every tet of `after` positively
-// oriented (exact orient3d), the non-free vertices unmoved. Returns false then, true once
-// committed. InvariantError (from apply_swap) if the changed tets do not fill the same cavity.
+// oriented (exact orient3d), the non-free vertices unmoved, every triangle of `local.mesh.tris`
+// (the copy's hull and the constrained faces inside it) still a face of a tet of `after`. Returns
+// false then, true once committed. InvariantError (from apply_swap) if the changed tets do not fill
+// the same cavity.
 bool commit_local_mesh(TetMesh& mesh, const LocalMesh& local, const TetMesh& after,
                        std::vector<int>* free_slots = nullptr);
 
