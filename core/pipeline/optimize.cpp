@@ -10,6 +10,7 @@
 #include "core/boundary/discrete_boundary.h"
 #include "core/boundary/flip_boundary_edges.h"
 #include "core/boundary/remove_boundary_caps.h"
+#include "core/boundary/restore_crossing_vertices.h"
 #include "core/boundary/smooth_boundary_maxmin.h"
 #include "core/boundary/verify_free_boundary.h"
 #include "core/cvt/lloyd3.h"
@@ -389,6 +390,14 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   if (free_boundary) {
     b = boundary_model(mesh, o);
     run_cvdt_swap_smooth_free3(mesh, o, *b, r);
+    // Where the moved surface crosses itself, its vertices there go back to the input surface
+    // (the check at the end fails the method if that was not enough).
+    const RestoreCrossingStats rc = restore_crossing_vertices(mesh, input);
+    if (rc.nb_pairs_before > 0 && rc.nb_restored > 0)
+      r.notes.push_back("the free boundary made " + std::to_string(rc.nb_pairs_before) +
+                        " pairs of boundary triangles cross: " + std::to_string(rc.nb_restored) +
+                        " of their vertices went back to their input positions (" +
+                        std::to_string(rc.nb_pairs_after) + " pairs left)");
   } else {
     find_method(method, 3)->run3(mesh, o, r);
   }
