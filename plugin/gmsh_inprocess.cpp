@@ -3,6 +3,8 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/io/gmsh_mid_edge_projector.h"
@@ -12,6 +14,7 @@
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/read_sizing_reference.h"
 #include "core/pipeline/option_schema.h"
 #include "core/util/error.h"
 
@@ -143,7 +146,25 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
   return out;
 }
 
-GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options) {
+GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& given) {
+  GmshOptimizeOptions options = given;
+  // sizing = a file (Python's sizing="ref.msh"): the reference mesh is read as the CLI reads it,
+  // into a model of its own (the caller's current model is left as it is). Only mesh files: a
+  // model file (.geo, STEP, ...) would be meshed in the caller's session and set its options.
+  if (sizing_is_path(options.optimize) && !options.optimize.sizing_reference) {
+    const std::string& path = options.optimize.sizing;
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    for (const char* model : {".geo", ".step", ".stp", ".brep", ".iges", ".igs", ".xao"})
+      if (ext == model)
+        throw InputError("sizing reference '" + path +
+                         "': a model file; inside a Gmsh session the reference must be a mesh "
+                         "file (mesh the model and save it as .msh first, or use the CLI's "
+                         "--sizing, which meshes it in a session of its own)");
+    options.optimize.sizing_reference =
+        read_sizing_reference(path, options.dim == 2 || options.dim == 3 ? options.dim : -1);
+  }
   // Bad values are refused before the model is read (optimize() checks again for the dimension).
   validate(options.optimize, options.dim == 2 || options.dim == 3 ? options.dim : 0);
   MeshData data = gmsh_read_current(options);

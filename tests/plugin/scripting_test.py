@@ -192,6 +192,28 @@ class InProcessScripting(unittest.TestCase):
                              [("part.geo", 2, "OnelabRun")])
         self.assertEqual(cvtmesh.scan_geo(os.path.join(SOURCE_DIR, "geo", "cube_sphere.geo")), [])
 
+    def test_sizing_from_a_reference_mesh_file(self):
+        entities = gmsh.model.getEntities()
+        before = nodes(3)
+        with tempfile.TemporaryDirectory() as tmp:
+            ref = os.path.join(tmp, "ref.msh")
+            gmsh.write(ref)
+            # A missing file and a model file (it would be meshed in this session) are refused,
+            # named, before anything moves.
+            for bad, words in ((os.path.join(tmp, "none.msh"), "no such file"),
+                               (GEO, "a model file")):
+                with self.assertRaises(cvtmesh.InputError) as e:
+                    cvtmesh.optimize(sizing=bad, max_iterations=3)
+                self.assertIn(bad, str(e.exception))
+                self.assertIn(words, str(e.exception))
+            self.assertEqual(nodes(3), before)
+            table = cvtmesh.optimize(sizing=ref, method=moving_method(), max_iterations=5,
+                                     fix_boundary=True)
+        self.assertEqual(table["method"], moving_method())
+        # The reference went into a model of its own: the current model is the one optimized.
+        self.assertEqual(gmsh.model.getEntities(), entities)
+        self.assertNotEqual(nodes(3), before)
+
     def test_errors_are_exceptions_and_leave_the_model_alone(self):
         before = nodes(3)
         with self.assertRaises(ValueError):
