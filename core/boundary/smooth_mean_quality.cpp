@@ -135,7 +135,7 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
         cur += q;
         star_q = std::min(star_q, q);
       }
-      if (!(cur < o.star_below * n)) continue;
+      if (!(cur < (interior ? o.star_below : o.boundary_star_below) * n)) continue;
       for (const int* s = b; s != e; ++s) star_a = std::min(star_a, angle_of(mesh, *s));
       if (!interior)
         for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)

@@ -33,8 +33,10 @@ struct MeanQualityOptions {
   int max_halvings = 6;    // step halvings before a vertex gives up
   double step = 0.1;       // first trial step: this fraction of the star's shortest edge
   double min_gain = 1e-5;  // a move is kept if the star's sum rises by at least this much
-  // A vertex is tried only if the mean Q of its star is below this (1: all of them).
+  // A vertex is tried only if the mean Q of its star is below this (1: all of them); a boundary
+  // vertex (whose moves cost a projection and the Hausdorff check) below boundary_star_below.
   double star_below = 0.95;
+  double boundary_star_below = 0.95;
   double q_floor = 0.5, angle_floor = 30, tri_floor = 0.6;  // the guards (see above)
   bool interior = true;                                     // move the interior vertices
   bool boundary = true;                                     // move the surface and curve vertices
