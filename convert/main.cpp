@@ -47,7 +47,18 @@ int main(int argc, char** argv) {
               << "; no output written\n";
     return kExitBadInput;
   } catch (const cvtmesh::InputError& e) {
-    std::cerr << "cvtmesh: error: " << e.what() << "\n";
+    // Under --max-memory a reader's library may report the failed allocation its own way (an
+    // OpenCASCADE exception "Standard_MMgrRaw::Allocate(): malloc failed" through Gmsh): say it.
+    const std::string what = e.what();
+    const bool allocation = what.find("malloc failed") != std::string::npos ||
+                            what.find("out of memory") != std::string::npos ||
+                            what.find("bad_alloc") != std::string::npos;
+    std::cerr << "cvtmesh: error: " << what
+              << (limits.max_memory_mb > 0 && allocation &&
+                          what.find("out of memory") == std::string::npos
+                      ? " (out of memory: the --max-memory limit was reached)"
+                      : "")
+              << "\n";
     return kExitBadInput;
   } catch (const cvtmesh::OutputError& e) {
     std::cerr << "cvtmesh: error: " << e.what() << "\n";

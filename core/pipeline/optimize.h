@@ -118,6 +118,10 @@ struct OptimizeOptions {
   double volume_tolerance = 5e-3;
   // Constrained-CVT rounds of the boundary after Lloyd (core/boundary/boundary_lloyd.h).
   int boundary_lloyd_rounds = 10;
+  // Free boundary: passes of the average-quality smoothing at the end of the run (every vertex,
+  // the boundary ones on their entity: core/boundary/smooth_mean_quality.h), each between flips
+  // accepted on the average (swap_slivers' sum_criterion); 0 = none.
+  int mean_passes = 1;
   // The reference geometry of a free boundary: null, or a function returning a model without
   // geometry = the input's own boundary triangulation (make_discrete_boundary); the front ends
   // with the CAD loaded pass make_gmsh_cad_boundary_if_cad (core/io/gmsh_cad_boundary.h).

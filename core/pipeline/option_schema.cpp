@@ -211,6 +211,11 @@ std::vector<OptionSpec> make_schema() {
              "none)",
              kDim3),
       "5CVT rounds");
+  v.push_back(number("mean_passes", "--mean-passes", &O::mean_passes, 0, 20,
+                     "free boundary: passes of the average-quality smoothing (each vertex moved "
+                     "to raise its star's sum of Q, the minimum kept) and the flips on the "
+                     "average at the end (0 = none)",
+                     kDim3));
   // Issue 14 (robust branch): Python only for now; the CLI has --allow-worse (cmd_optimize.cpp).
   v.push_back(boolean("never_worse", "", &O::never_worse,
                       "never worse than the input: a result with a lower Q_min or min angle or a "

@@ -111,6 +111,12 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
     ++stats.nb_tets_before;
   }
   stats.min_before = global_min(q, mesh);
+  double sum_reference = 0;  // the mean quality at the start (sum_criterion)
+  if (options.sum_criterion && stats.nb_tets_before > 0) {
+    for (int t = 0; t < mesh.nb_tets(); ++t)
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) sum_reference += q[t];
+    sum_reference /= static_cast<double>(stats.nb_tets_before);
+  }
 
   struct Entry {
     double q;
@@ -158,6 +164,7 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
       SwapPlan best;
       bool have_best = false;
+      double best_gain = 0;
       // Evaluates a valid plan; true if the criterion accepts it (it becomes best if better).
       auto consider = [&](SwapPlan&& plan) {
         if (plan.status != SwapStatus::kOk) return false;
@@ -168,7 +175,23 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
           plan.quality_known = true;
           plan.measure = measure;
         }
-        if (!accept_swap(plan.old_min, plan.new_min, criterion)) return false;
+        double gain = 0;
+        if (options.sum_criterion) {
+          if (plan.new_min < plan.old_min) return false;
+          double old_sum = 0, new_sum = 0;
+          for (int o : plan.old_tets) old_sum += q[o];
+          for (const auto& n : plan.new_tets)
+            new_sum += tet_quality(mesh.point(n[0]), mesh.point(n[1]), mesh.point(n[2]),
+                                   mesh.point(n[3]), measure);
+          // Against the mesh's mean: the average rises when the sum gains more than the mean
+          // times the change in the number of tets.
+          gain = new_sum - old_sum -
+                 sum_reference * (static_cast<double>(plan.new_tets.size()) -
+                                  static_cast<double>(plan.old_tets.size()));
+          if (!(gain > options.sum_gain)) return false;
+        } else if (!accept_swap(plan.old_min, plan.new_min, criterion)) {
+          return false;
+        }
         if (options.use_guard) {
           const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
           const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
@@ -181,8 +204,10 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
           return false;
         if (options.dt_guard.on && !nodal_change(plan).allows(options.dt_guard, dt_steps))
           return false;
-        if (!have_best || plan.new_min > best.new_min) {
+        if (options.sum_criterion ? !have_best || gain > best_gain
+                                  : !have_best || plan.new_min > best.new_min) {
           best = std::move(plan);
+          best_gain = gain;
           have_best = true;
         }
         return true;

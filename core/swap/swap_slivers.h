@@ -34,6 +34,15 @@ struct SwapOptions {
   // The guard only protects values below this floor: the new minimum must be at least
   // min(old minimum, guard_floor) (-inf: must not decrease at all).
   double guard_floor = -std::numeric_limits<double>::infinity();
+  // The average instead of the minimum (the sum-of-quality criterion of Gmsh's and Netgen's
+  // optimizers): a swap is accepted when its gain, the sum of `measure` over the new tets minus
+  // the old tets' sum minus the mesh's mean at the start (m0) times the change in the number of
+  // tets, is above sum_gain, and the new tets' minimum is not below the old tets' minimum; of the
+  // accepted operations on a tet, the one with the largest gain is committed. The other guards
+  // apply as they are. So the global minimum never falls, and sum - m0 * #tets strictly rises at
+  // each swap (no cycle); the average rises with it while it stays near m0.
+  bool sum_criterion = false;
+  double sum_gain = 1e-4;
   // The time-step guard (time_step_guard.h; off by default): a swap is also refused when the
   // new tets' smallest element time step is below min(the old tets', floor).
   TimeStepGuard dt_guard;

@@ -1,0 +1,214 @@
+// The average-quality smoothing (core/boundary/smooth_mean_quality.h): the analytic gradient of Q
+// is the derivative; the sum of Q rises while the minima (Q, dihedral angle, boundary triangles'
+// Q) never fall; surface vertices stay on their faces (a box) and on the exact sphere (a CAD
+// ball), corners never move; the mesh stays valid; the flips on the average
+// (SwapOptions::sum_criterion) raise the sum less the starting mean per tet and never lower
+// the minimum.
+#include <gmsh.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "core/boundary/discrete_boundary.h"
+#include "core/boundary/smooth_mean_quality.h"
+#include "core/boundary/verify_free_boundary.h"
+#include "core/io/gmsh_cad_boundary.h"
+#include "core/io/gmsh_model.h"
+#include "core/io/gmsh_session.h"
+#include "core/mesh/check_mesh.h"
+#include "core/pipeline/verify_mesh.h"
+#include "core/quality/quality.h"
+#include "core/quality/quality_stats.h"
+#include "core/swap/swap_slivers.h"
+#include "tests/support/test_meshes.h"
+#include "tests/swap/swap_test_util.h"
+
+namespace cvtmesh {
+namespace {
+
+constexpr int kN = 4;  // the box [0, 4]^3, lattice spacing 1
+
+// The lattice points of the box, jittered within their own face / edge (corners exact),
+// deterministic; then their Delaunay tetrahedralization.
+TetMesh jittered_box(double amount) {
+  std::vector<double> xyz;
+  unsigned state = 777;
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / double(1 << 24) * 2 - 1;
+  };
+  for (int i = 0; i <= kN; ++i)
+    for (int j = 0; j <= kN; ++j)
+      for (int k = 0; k <= kN; ++k) {
+        double p[3] = {double(i), double(j), double(k)};
+        for (int d = 0; d < 3; ++d) {
+          const double r = rnd();
+          if (p[d] != 0 && p[d] != kN) p[d] += amount * r;
+        }
+        xyz.insert(xyz.end(), p, p + 3);
+      }
+  return testing::delaunay_of_points(xyz);
+}
+
+struct Figures {
+  double sum = 0, q_min = 1e300, angle_min = 1e300, tri_min = 1e300;
+};
+
+Figures figures(const TetMesh& m) {
+  Figures f;
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* v = &m.tets[4 * t];
+    if (v[0] < 0) continue;
+    const double *a = m.point(v[0]), *b = m.point(v[1]), *c = m.point(v[2]), *d = m.point(v[3]);
+    const double q = tet_quality(a, b, c, d, Measure::kQ);
+    f.sum += q;
+    f.q_min = std::min(f.q_min, q);
+    f.angle_min = std::min(f.angle_min, tet_quality(a, b, c, d, Measure::kMinAngle));
+  }
+  for (int k = 0; k < m.nb_tris(); ++k) {
+    const int* v = &m.tris[3 * k];
+    f.tri_min = std::min(f.tri_min,
+                         tri_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), 3, Measure::kQ));
+  }
+  return f;
+}
+
+TEST(TetQGradient, IsTheDerivativeOfQ) {
+  const double p0[4][3] = {{0.1, -0.2, 0.05}, {1.3, 0.1, -0.1}, {0.4, 0.9, 0.2}, {0.3, 0.2, 1.1}};
+  for (int k = 0; k < 4; ++k) {
+    double p[4][3];
+    std::copy(&p0[0][0], &p0[0][0] + 12, &p[0][0]);
+    const double* pp[4] = {p[0], p[1], p[2], p[3]};
+    double g[3];
+    tet_q_gradient(pp, k, g);
+    for (int c = 0; c < 3; ++c) {
+      const double h = 1e-6, x = p[k][c];
+      p[k][c] = x + h;
+      const double qp = tet_quality(p[0], p[1], p[2], p[3], Measure::kQ);
+      p[k][c] = x - h;
+      const double qm = tet_quality(p[0], p[1], p[2], p[3], Measure::kQ);
+      p[k][c] = x;
+      EXPECT_NEAR(g[c], (qp - qm) / (2 * h), 1e-7) << "vertex " << k << " coordinate " << c;
+    }
+  }
+}
+
+TEST(SmoothMeanQuality, TheSumRisesTheMinimaNeverFallAndFacesStayFlat) {
+  TetMesh m = jittered_box(0.3);
+  ASSERT_TRUE(check_mesh(m).ok);
+  const TetMesh start = m;
+  const BoundaryModel b = make_discrete_boundary(m);
+  const Figures before = figures(m);
+  MeanQualityOptions o;
+  o.passes = 3;
+  o.star_below = 1;
+  const MeanQualityStats st = smooth_mean_quality(m, b, o);
+  ASSERT_TRUE(check_mesh(m).ok);
+  EXPECT_EQ(testing::nb_not_positive(m), 0);
+  const Figures after = figures(m);
+  EXPECT_GT(st.nb_moved, 0);
+  EXPECT_GT(after.sum, before.sum);
+  EXPECT_NEAR(st.sum_before, before.sum, 1e-9);
+  EXPECT_NEAR(st.sum_after, after.sum, 1e-9);
+  // The guards: nothing falls below min(its minimum before, the floor).
+  EXPECT_GE(after.q_min, std::min(before.q_min, o.q_floor));
+  EXPECT_GE(after.angle_min, std::min(before.angle_min, o.angle_floor));
+  EXPECT_GE(after.tri_min, std::min(before.tri_min, o.tri_floor));
+  int moved_interior = 0, moved_face = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    const double *p = m.point(v), *p0 = start.point(v);
+    int on = 0;
+    for (int d = 0; d < 3; ++d) on += p0[d] == 0 || p0[d] == kN;
+    const bool moved = p[0] != p0[0] || p[1] != p0[1] || p[2] != p0[2];
+    if (on == 3) EXPECT_FALSE(moved) << "corner " << v << " moved";
+    for (int d = 0; d < 3; ++d)
+      if (p0[d] == 0 || p0[d] == kN) EXPECT_NEAR(p[d], p0[d], 1e-12) << v;
+    moved_interior += on == 0 && moved;
+    moved_face += on == 1 && moved;
+  }
+  EXPECT_GT(moved_interior, 0);
+  EXPECT_GT(moved_face, 0);
+  // The end-of-run invariants of a free boundary: flat faces, so no volume change.
+  VerifyOptions vo;
+  vo.boundary_moves = true;
+  vo.volume_tolerance = 1e-9;
+  EXPECT_NO_THROW(verify_optimized(start, m, vo));
+  FreeBoundaryTolerances ft;
+  ft.hausdorff = 1e-9;
+  EXPECT_LE(verify_free_boundary(start, m, b, ft).hausdorff.value(), 1e-9);
+}
+
+TEST(SmoothMeanQuality, InteriorOnlyLeavesTheBoundaryAndAGoodMeshIsLeftAlone) {
+  TetMesh m = jittered_box(0.3);
+  const TetMesh start = m;
+  MeanQualityOptions o;
+  o.star_below = 1;
+  const MeanQualityStats st = smooth_mean_quality(m, BoundaryModel{}, o);
+  EXPECT_GT(st.nb_moved, 0);
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    if (start.vclass[v].dim < 3)
+      for (int d = 0; d < 3; ++d) EXPECT_EQ(m.point(v)[d], start.point(v)[d]) << v;
+  // No star's mean below 0: nothing is tried.
+  o.star_below = 0;
+  TetMesh again = start;
+  EXPECT_EQ(smooth_mean_quality(again, BoundaryModel{}, o).nb_tried, 0);
+  EXPECT_EQ(again.xyz, start.xyz);
+}
+
+TEST(SmoothMeanQuality, SurfaceVerticesOfACadBallStayOnTheSphereTo1e12) {
+  const std::string geo = testing::temp_dir() + "/mean_ball.geo";
+  {
+    std::ofstream f(geo);
+    f << "SetFactory(\"OpenCASCADE\");\nSphere(1) = {0.1, 0.2, 0.3, 1};\n"
+         "Mesh.MeshSizeMax = 0.35;\nMesh.MeshSizeMin = 0.35;\n";
+  }
+  GmshSession session;
+  gmsh::open(geo);
+  gmsh::model::mesh::generate(3);
+  MeshData d = mesh_from_gmsh(3, "ball");
+  TetMesh& m = d.tet;
+  const TetMesh start = m;
+  const BoundaryModel b = make_gmsh_cad_boundary(m);
+  const Figures before = figures(m);
+  MeanQualityOptions o;
+  o.star_below = 1;
+  o.hausdorff = 0.05;
+  const MeanQualityStats st = smooth_mean_quality(m, b, o);
+  ASSERT_TRUE(check_mesh(m).ok);
+  EXPECT_GT(figures(m).sum, before.sum);
+  int moved_surface = 0;
+  for (int v = 0; v < start.nb_vertices(); ++v) {
+    const double *p = m.point(v), *p0 = start.point(v);
+    if (p[0] == p0[0] && p[1] == p0[1] && p[2] == p0[2]) continue;
+    ASSERT_NE(start.vclass[v].dim, 0) << "a CAD point moved";
+    if (start.vclass[v].dim == 3) continue;
+    moved_surface += start.vclass[v].dim == 2;
+    const double r = std::sqrt((p[0] - 0.1) * (p[0] - 0.1) + (p[1] - 0.2) * (p[1] - 0.2) +
+                               (p[2] - 0.3) * (p[2] - 0.3));
+    EXPECT_LE(std::fabs(r - 1), 1e-12) << v;
+  }
+  EXPECT_GT(st.nb_moved, 0);
+  EXPECT_GT(moved_surface, 0);
+}
+
+TEST(SwapSumCriterion, TheSumLessTheStartMeanRisesAndTheMinimumNeverFalls) {
+  TetMesh m = jittered_box(0.45);
+  const QualityStats before = quality_stats(m, "");
+  SwapOptions so;
+  so.sum_criterion = true;
+  const SwapStats st = swap_slivers(m, so);
+  ASSERT_TRUE(check_mesh(m).ok);
+  EXPECT_EQ(testing::nb_not_positive(m), 0);
+  const QualityStats after = quality_stats(m, "");
+  EXPECT_GT(st.nb_flip23 + st.nb_flip32 + st.nb_edge_removals, 0);
+  // What each swap raises: the sum less the starting mean per tet.
+  const double m0 = before.q_avg;
+  EXPECT_GT(after.q_avg * after.nb_elements - m0 * after.nb_elements,
+            before.q_avg * before.nb_elements - m0 * before.nb_elements);
+  EXPECT_GE(after.q_min, before.q_min);
+}
+
+}  // namespace
+}  // namespace cvtmesh
