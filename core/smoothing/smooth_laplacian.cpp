@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/geometry/predicates.h"
+#include "core/mesh/colour_vertices.h"
 #include "core/mesh/vertex_tets.h"
 
 namespace cvtmesh {
@@ -37,32 +38,17 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   // that no two vertices of a colour share a tet; the vertices of one colour then move
   // independently (each reads its neighbours, of other colours, and writes its own point and the
   // qualities of its own star), in parallel, and the result does not depend on the thread count.
-  std::vector<int> colour(nv, -1), colour_offset, by_colour;
-  {
-    std::vector<int> mark;  // mark[c] == v: colour c is taken by a neighbour of v
-    int nb_colours = 0;
-    for (int v = 0; v < nv; ++v) {
-      if (mesh.vclass[v].dim < 3 || star.nb_tets_of(v) == 0) continue;
-      for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
-        for (int k = 0; k < 4; ++k) {
-          const int c = colour[mesh.tets[4 * static_cast<std::size_t>(*t) + k]];
-          if (c >= 0) mark[c] = v;
-        }
-      int c = 0;
-      while (c < nb_colours && mark[c] == v) ++c;
-      if (c == nb_colours) mark.push_back(-1), ++nb_colours;
-      colour[v] = c;
-    }
-    colour_offset.assign(nb_colours + 1, 0);
-    for (int v = 0; v < nv; ++v)
-      if (colour[v] >= 0) ++colour_offset[colour[v] + 1];
-    for (int c = 0; c < nb_colours; ++c) colour_offset[c + 1] += colour_offset[c];
-    by_colour.resize(colour_offset[nb_colours]);
-    std::vector<int> fill(colour_offset.begin(), colour_offset.end() - 1);
-    for (int v = 0; v < nv; ++v)
-      if (colour[v] >= 0) by_colour[fill[colour[v]]++] = v;
-  }
-  const int nb_colours = static_cast<int>(colour_offset.size()) - 1;
+  std::vector<int> order;
+  for (int v = 0; v < nv; ++v)
+    if (mesh.vclass[v].dim == 3 && star.nb_tets_of(v) > 0) order.push_back(v);
+  const VertexColouring colours = colour_vertices(nv, order, [&](int v, std::vector<int>& out) {
+    for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+      out.insert(out.end(), &mesh.tets[4 * static_cast<std::size_t>(*t)],
+                 &mesh.tets[4 * static_cast<std::size_t>(*t)] + 4);
+  });
+  const std::vector<int>& colour_offset = colours.offset;
+  const std::vector<int>& by_colour = colours.vertices;
+  const int nb_colours = colours.nb_colours();
   long nb_moved = 0, nb_half = 0, nb_rejected = 0;
   // The nodal sums of the time-step guard, updated after each colour from its accepted moves
   // (in vertex order: the same sums whatever the thread count).
