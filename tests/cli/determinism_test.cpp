@@ -51,6 +51,17 @@ TEST(Determinism, Optimize3dDefaultMethodBinaryMsh) {
                        "out3d.msh");
 }
 
+// A mesh large enough (~6.5k tets) that the parallel stages of the default method run on more
+// than one thread: the constrained CVT's colours of boundary and interior moves, the flips
+// planned ahead in blocks (SWAP and the polish), the parallel scans of the max-min smoothings.
+TEST(Determinism, Optimize3dDefaultMethodParallelStagesBinaryMsh) {
+  const std::string dir = testing::temp_dir();
+  expect_deterministic(dir,
+                       "optimize '" + testing::geo_path("cube_sphere.geo") +
+                           "' --set h=0.1 --set h_ball=0.08 --binary -q -o out3d_par.msh",
+                       "out3d_par.msh");
+}
+
 TEST(Determinism, Perturb2dThenOptimize2dBinaryMsh) {
   const std::string dir = testing::temp_dir();
   const std::string geo = testing::geo_path("washer.geo");
