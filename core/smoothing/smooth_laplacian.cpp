@@ -55,6 +55,15 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   const bool guard = options.dt_guard.on;
   VertexTimeSteps steps;
   if (guard) steps = vertex_time_steps(mesh);
+  // Each tet's element time step (the guard's), kept current as its star's moves are accepted.
+  std::vector<double> tdt;
+  if (guard) {
+    tdt.assign(static_cast<std::size_t>(nt), std::numeric_limits<double>::infinity());
+#pragma omp parallel for schedule(static, 1024)
+    for (int t = 0; t < nt; ++t)
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0)
+        tdt[t] = quality_of(mesh, t, Measure::kTimeStep);
+  }
   std::vector<VertexStepChange> changes;
   std::vector<char> changed;
   std::vector<std::array<double, 3>> origin;  // of the accepted moves
@@ -70,7 +79,7 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
 #pragma omp parallel reduction(+ : nb_moved, nb_half, nb_rejected) if (colour_offset[c + 1] - colour_offset[c] > 2048)
       {
         std::vector<int> nbrs;
-        std::vector<double> new_q;
+        std::vector<double> new_q, new_dt;
         VertexStepChange before, after;
 #pragma omp for schedule(static, 256)
         for (int i = colour_offset[c]; i < colour_offset[c + 1]; ++i) {
@@ -94,7 +103,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
 
           double* P = mesh.point(v);
           const double orig[3] = {P[0], P[1], P[2]};
-          const double old_dt = guard ? min_time_step(mesh, star.begin_of(v), star.end_of(v)) : 0;
+          double old_dt = std::numeric_limits<double>::infinity();
+          if (guard)
+            for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+              old_dt = std::min(old_dt, tdt[*t]);
           if (guard) {
             before.clear();
             for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
@@ -118,8 +130,13 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
               new_min = std::min(new_min, new_q.back());
             }
             if (ok && new_min >= old_min && guard) {
-              ok = time_step_allows(options.dt_guard, old_dt,
-                                    min_time_step(mesh, star.begin_of(v), star.end_of(v)));
+              new_dt.clear();
+              double new_min_dt = std::numeric_limits<double>::infinity();
+              for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
+                new_dt.push_back(quality_of(mesh, *t, Measure::kTimeStep));
+                new_min_dt = std::min(new_min_dt, new_dt.back());
+              }
+              ok = time_step_allows(options.dt_guard, old_dt, new_min_dt);
               if (ok) {
                 after = before;
                 for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
@@ -137,6 +154,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
               moved = true;
               std::size_t j = 0;
               for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) q[*t] = new_q[j++];
+              j = 0;
+              if (guard)
+                for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+                  tdt[*t] = new_dt[j++];
               ++(attempt == 0 ? nb_moved : nb_half);
             }
           }
@@ -159,8 +180,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
           }
           const int v = by_colour[colour_offset[c] + static_cast<int>(j)];
           for (int k = 0; k < 3; ++k) mesh.point(v)[k] = origin[j][k];
-          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
             q[*t] = quality_of(mesh, *t, options.measure);
+            tdt[*t] = quality_of(mesh, *t, Measure::kTimeStep);
+          }
           ++nb_rejected;
           --(changed[j] == 1 ? nb_moved : nb_half);
         }
