@@ -13,7 +13,6 @@
 #include "core/geometry/vec3.h"
 #include "core/quality/quality.h"
 #include "core/mesh/build_adjacency.h"
-#include "core/mesh/colour_vertices.h"
 #include "core/mesh/vertex_tets.h"
 #include "core/swap/constrained_faces.h"
 
@@ -64,56 +63,17 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
   for (int round = 0; round < o.max_rounds;) {
     const TetMesh backup = mesh;
     const VolumeBudget budget_backup = o.volume_budget ? *o.volume_budget : VolumeBudget{};
+    std::vector<double> delta;
     const VertexTets star = vertex_tets(mesh);
     const BoundaryFans fans = boundary_fans(mesh);
-    const int nv = mesh.nb_vertices();
-    auto moves_interior = [&](int v) {
-      return o.move_interior && v < static_cast<int>(mesh.vclass.size()) && mesh.vclass[v].dim == 3;
-    };
-    // The vertices that may move, coloured (in vertex order) so that no two of a colour read
-    // what the other writes: a move reads its star and, for a boundary vertex, the fans of its
-    // fan's vertices (the Hausdorff check). The vertices of a colour move in parallel; what
-    // depends on the order (the volume budget, the sums) is done after each colour, in vertex
-    // order: the result does not depend on the number of threads.
-    std::vector<int> order;
-    for (int v = 0; v < nv; ++v)
-      if (star.nb_tets_of(v) > 0 && (model.movable(v) || moves_interior(v))) order.push_back(v);
-    const VertexColouring colours = colour_vertices(nv, order, [&](int v, std::vector<int>& out) {
-      for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
-        out.insert(out.end(), &mesh.tets[4 * static_cast<std::size_t>(*t)],
-                   &mesh.tets[4 * static_cast<std::size_t>(*t)] + 4);
-      for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int u = mesh.tris[3 * static_cast<std::size_t>(*f) + k];
-          for (const int* g = fans.begin_of(u); g != fans.end_of(u); ++g)
-            out.insert(out.end(), &mesh.tris[3 * static_cast<std::size_t>(*g)],
-                       &mesh.tris[3 * static_cast<std::size_t>(*g)] + 3);
-        }
-    });
-    const bool parallel = model.geometry->thread_safe();
-    const std::size_t nb_regions = o.volume_budget ? o.volume_budget->region.size() : 0;
     long moved = 0, refused = 0, nb_boundary = 0;
     double sum_move2 = 0;
-    // Per vertex of the colour: 1 if a boundary move was applied (pending the budget), its old
-    // position and its volume change.
-    std::vector<char> applied;
-    std::vector<double> old_xyz, deltas;
-    for (int c = 0; c < colours.nb_colours(); ++c) {
-      const int* vs = colours.begin_of(c);
-      const int n = colours.size_of(c);
-      applied.assign(n, 0);
-      old_xyz.resize(3 * static_cast<std::size_t>(n));
-      deltas.resize(static_cast<std::size_t>(n) * nb_regions);
-#pragma omp parallel for schedule(dynamic, 16) reduction(+ : refused, nb_boundary) if (parallel && n > 64)
-      for (int i = 0; i < n; ++i) {
-        const int v = vs[i];
-        const double* z = mesh.point(v);
-        double wanted[3];
-        for (int d = 0; d < 3; ++d) wanted[d] = z[d] + omega * (cc.centroid[3 * v + d] - z[d]);
-        if (!model.movable(v)) {
-          move_interior(mesh, star, v, wanted);
-          continue;
-        }
+    for (int v = 0; v < mesh.nb_vertices(); ++v) {
+      if (star.nb_tets_of(v) == 0) continue;
+      const double* z = mesh.point(v);
+      double wanted[3];
+      for (int d = 0; d < 3; ++d) wanted[d] = z[d] + omega * (cc.centroid[3 * v + d] - z[d]);
+      if (model.movable(v)) {
         ++nb_boundary;
         const PlannedBoundaryMove plan =
             plan_boundary_move(mesh, model, star, fans, v, wanted, o.hausdorff);
@@ -121,46 +81,28 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
           ++refused;
           continue;
         }
-        if (o.volume_budget) {
-          std::vector<double> delta;
-          o.volume_budget->delta_of(mesh, star, v, plan.position, delta);
-          std::copy(delta.begin(), delta.end(), deltas.begin() + i * nb_regions);
+        if (o.volume_budget && !o.volume_budget->admits(mesh, star, v, plan.position, delta)) {
+          ++refused;
+          continue;
         }
         const auto before = star_minima(mesh, star, fans, v);
-        for (int d = 0; d < 3; ++d) old_xyz[3 * static_cast<std::size_t>(i) + d] = z[d];
+        const Vec3 old = vec3(z);
         apply_boundary_move(mesh, v, plan);
         const auto after = star_minima(mesh, star, fans, v);
         if (after.first < std::min(before.first, o.q_guard) ||
             after.second < std::min(before.second, o.tri_guard)) {
-          for (int d = 0; d < 3; ++d)
-            mesh.point(v)[d] = old_xyz[3 * static_cast<std::size_t>(i) + d];
+          for (int d = 0; d < 3; ++d) mesh.point(v)[d] = old[d];
           ++refused;
           continue;
         }
-        applied[i] = 1;
-      }
-      // The budget, in vertex order: a move it refuses is undone (no other move of the colour
-      // read its position).
-      std::vector<double> delta(nb_regions);
-      for (int i = 0; i < n; ++i) {
-        if (!applied[i]) continue;
-        const int v = vs[i];
-        const double* old = &old_xyz[3 * static_cast<std::size_t>(i)];
-        if (o.volume_budget) {
-          std::copy(deltas.begin() + i * nb_regions, deltas.begin() + (i + 1) * nb_regions,
-                    delta.begin());
-          if (!o.volume_budget->fits(delta)) {
-            for (int d = 0; d < 3; ++d) mesh.point(v)[d] = old[d];
-            ++refused;
-            continue;
-          }
-          o.volume_budget->commit(delta);
-        }
-        const double* p = mesh.point(v);
+        if (o.volume_budget) o.volume_budget->commit(delta);
         double d2 = 0;
-        for (int d = 0; d < 3; ++d) d2 += (p[d] - old[d]) * (p[d] - old[d]);
+        for (int d = 0; d < 3; ++d) d2 += (plan.position[d] - old[d]) * (plan.position[d] - old[d]);
         sum_move2 += d2;
         ++moved;
+      } else if (o.move_interior && v < static_cast<int>(mesh.vclass.size()) &&
+                 mesh.vclass[v].dim == 3) {
+        move_interior(mesh, star, v, wanted);
       }
     }
     const ConstrainedFaces constrained = constrained_faces(mesh);

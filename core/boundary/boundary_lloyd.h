@@ -7,10 +7,7 @@
 // never corners, locked or periodic vertices (plan_boundary_move checks each move: exact
 // orientation of the star, Hausdorff tolerance). Then the constrained Delaunay property is
 // restored by flips. A round that raises the CVT energy is undone and retried with half the step,
-// so the accepted energies never increase. The moves of a round run colour by colour
-// (colour_vertices: no two vertices of a colour share a tet or are within two boundary edges),
-// each colour in parallel when the geometry is thread-safe; the volume budget is charged after
-// each colour in vertex order, so the result does not depend on the number of threads.
+// so the accepted energies never increase.
 #pragma once
 #include <limits>
 #include <vector>

@@ -36,14 +36,8 @@ VolumeBudget VolumeBudget::of(const TetMesh& mesh, double tolerance) {
 
 bool VolumeBudget::admits(const TetMesh& m, const VertexTets& star, int v, const double* q,
                           std::vector<double>& delta) const {
-  delta_of(m, star, v, q, delta);
-  return fits(delta);
-}
-
-void VolumeBudget::delta_of(const TetMesh& m, const VertexTets& star, int v, const double* q,
-                            std::vector<double>& delta) const {
   delta.assign(region.size(), 0);
-  if (!std::isfinite(tolerance)) return;
+  if (!std::isfinite(tolerance)) return true;
   for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
     const int* w = &m.tets[4 * static_cast<std::size_t>(*t)];
     const double* p[4];
@@ -57,11 +51,7 @@ void VolumeBudget::delta_of(const TetMesh& m, const VertexTets& star, int v, con
     for (std::size_t i = 0; i < region.size(); ++i)
       if (region[i] == m.tet_region[*t]) delta[i] += d;
   }
-}
-
-bool VolumeBudget::fits(const std::vector<double>& delta) const {
-  if (!std::isfinite(tolerance)) return true;
-  for (std::size_t i = 0; i < region.size() && i < delta.size(); ++i)
+  for (std::size_t i = 0; i < region.size(); ++i)
     if (std::fabs(change[i] + delta[i]) > tolerance * std::fabs(volume[i])) return false;
   return true;
 }

@@ -28,11 +28,6 @@ struct VolumeBudget {
   // region out of the budget.
   bool admits(const TetMesh& mesh, const VertexTets& star, int v, const double* q,
               std::vector<double>& delta) const;
-  // The two halves of admits: the change `delta` alone (reads v's star only, not the running
-  // change: may run concurrently for vertices of disjoint stars), and whether it fits.
-  void delta_of(const TetMesh& mesh, const VertexTets& star, int v, const double* q,
-                std::vector<double>& delta) const;
-  bool fits(const std::vector<double>& delta) const;
   void commit(const std::vector<double>& delta);
 };
 

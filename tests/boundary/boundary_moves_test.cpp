@@ -10,8 +10,6 @@
 #include <map>
 #include <set>
 
-#include <omp.h>
-
 #include "core/boundary/boundary_lloyd.h"
 #include "core/boundary/boundary_move.h"
 #include "core/boundary/discrete_boundary.h"
@@ -36,21 +34,21 @@ int nb_on_faces(const double* p) {
 }
 
 // The lattice with every point jittered within its own face / edge (corners exact), by up to
-// `amount`, deterministic; the box [0, n]^3.
-TetMesh jittered_box(double amount, int n = kN) {
+// `amount`, deterministic.
+TetMesh jittered_box(double amount) {
   std::vector<double> xyz;
   unsigned state = 12345;
   auto rnd = [&] {
     state = state * 1664525u + 1013904223u;
     return (state >> 8) / double(1 << 24) * 2 - 1;
   };
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-      for (int k = 0; k <= n; ++k) {
+  for (int i = 0; i <= kN; ++i)
+    for (int j = 0; j <= kN; ++j)
+      for (int k = 0; k <= kN; ++k) {
         double p[3] = {double(i), double(j), double(k)};
         for (int d = 0; d < 3; ++d) {
           const double r = rnd();
-          if (p[d] != 0 && p[d] != n) p[d] += amount * r;
+          if (p[d] != 0 && p[d] != kN) p[d] += amount * r;
         }
         xyz.insert(xyz.end(), p, p + 3);
       }
@@ -180,41 +178,6 @@ TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
   ASSERT_GE(s.energy.size(), 3u);
   for (std::size_t i = 1; i < s.energy.size(); ++i) EXPECT_LE(s.energy[i], s.energy[i - 1]) << i;
   EXPECT_LT(s.energy.back(), 0.99 * s.energy.front());
-}
-
-// The moves of a round run colour by colour, each colour in parallel, and the volume budget is
-// charged in vertex order: 1 and 2 threads give the same coordinates to the bit, the same
-// connectivity and the same budget. The box is large enough (16^3 lattice cells, ~1500 boundary
-// vertices) that colours hold more vertices than the serial cut-off, with a budget small enough
-// to refuse moves.
-TEST(BoundaryLloyd, TheResultDoesNotDependOnTheThreadCount) {
-  const TetMesh start = jittered_box(0.3, 16);
-  const BoundaryModel b = make_discrete_boundary(start);
-  const auto sizing = make_uniform_sizing3(1.0);
-  auto run = [&](int threads, VolumeBudget& budget) {
-    const int saved = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    TetMesh m = start;
-    BoundaryLloydOptions o;
-    o.max_rounds = 3;
-    o.tolerance = 0;
-    o.hausdorff = 0.05;
-    budget = VolumeBudget::of(m, 2e-4);
-    o.volume_budget = &budget;
-    const BoundaryLloydStats s = boundary_lloyd(m, b, *sizing, o);
-    omp_set_num_threads(saved);
-    EXPECT_GT(s.nb_moved, 1000);
-    EXPECT_GT(s.nb_refused, 0);
-    EXPECT_TRUE(check_mesh(m).ok);
-    return m;
-  };
-  VolumeBudget b1, b2;
-  const TetMesh one = run(1, b1), two = run(2, b2);
-  EXPECT_TRUE(one.xyz == two.xyz);
-  EXPECT_TRUE(one.tets == two.tets);
-  EXPECT_TRUE(one.tris == two.tris);
-  EXPECT_TRUE(b1.change == b2.change);
-  EXPECT_TRUE(one.xyz != start.xyz);
 }
 
 TEST(BoundaryMoves, ARefusedMoveLeavesTheMeshUnchanged) {

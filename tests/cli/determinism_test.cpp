@@ -52,8 +52,8 @@ TEST(Determinism, Optimize3dDefaultMethodBinaryMsh) {
 }
 
 // A mesh large enough (~6.5k tets) that the parallel stages of the default method run on more
-// than one thread: the constrained CVT's colours of boundary and interior moves, the flips
-// planned ahead in blocks (SWAP and the polish), the parallel scans of the max-min smoothings.
+// than one thread: the flips planned ahead in blocks (SWAP and the polish), the parallel scans of
+// the max-min smoothings and of the time-step guard's nodal sums.
 TEST(Determinism, Optimize3dDefaultMethodParallelStagesBinaryMsh) {
   const std::string dir = testing::temp_dir();
   expect_deterministic(dir,
