@@ -59,7 +59,6 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   if (options.max_ring < 3 || options.max_ring > 7)
     throw std::invalid_argument("swap_slivers: max_ring must be 3..7");
   if (options.max_passes < 0) throw std::invalid_argument("swap_slivers: max_passes must be >= 0");
-  if (options.plan_block < 1) throw std::invalid_argument("swap_slivers: plan_block must be >= 1");
   if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
 
   const Measure measure = options.measure;
@@ -103,15 +102,12 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   std::vector<unsigned> version(q.size(), 0);
   refused.assign(q.size(), 0);
   std::vector<int> free_slots;
-  const int nt0 = mesh.nb_tets();
-#pragma omp parallel for schedule(static, 1024)
-  for (int t = 0; t < nt0; ++t)
-    if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) q[t] = quality_of(mesh, t, measure);
-  for (int t = 0; t < nt0; ++t) {
+  for (int t = 0; t < mesh.nb_tets(); ++t) {
     if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0) {
       free_slots.push_back(t);
       continue;
     }
+    q[t] = quality_of(mesh, t, measure);
     ++stats.nb_tets_before;
   }
   stats.min_before = global_min(q, mesh);
@@ -133,98 +129,14 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   // The nodal sums of the time-step guard, updated at each committed swap.
   VertexTimeSteps dt_steps;
   if (options.dt_guard.on) dt_steps = vertex_time_steps(mesh);
-  auto nodal_change = [&](const SwapPlan& plan,
-                          VertexStepChange& change) -> const VertexStepChange& {
-    change.clear();
-    for (int o : plan.old_tets) change.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(o)], -1);
-    for (const auto& t : plan.new_tets) change.add(mesh, t.data(), +1);
-    return change;
-  };
-  // The operations of one tet, planned: the best one the criterion accepts (if any), the
-  // refusals to mark, and the vertices of every tet the planning read (their stars hold all it
-  // depends on: a commit that changes a ring, a neighbour, a quality or a nodal sum it read
-  // replaces or creates a tet around one of them). Reads the mesh, q, refused and dt_steps only.
-  struct TetPlan {
-    bool have_best = false;
-    SwapPlan best;
-    std::vector<std::pair<int, std::uint16_t>> refusals;  // (tet, bits) to set
-    std::vector<int> reads;
-  };
-  auto plan_tet = [&](int t, TetPlan& out, VertexStepChange& change) {
-    out.have_best = false;
-    out.refusals.clear();
-    out.reads.clear();
-    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
-    out.reads.assign(tv, tv + 4);
-    auto read_tet = [&](int r) {
-      const int* rv = &mesh.tets[4 * static_cast<std::size_t>(r)];
-      out.reads.insert(out.reads.end(), rv, rv + 4);
-    };
-    // Evaluates a valid plan; true if the criterion accepts it (it becomes best if better).
-    auto consider = [&](SwapPlan&& plan) {
-      if (plan.status != SwapStatus::kOk) return false;
-      if (!plan.quality_known || plan.measure != measure) {
-        plan.old_min = std::numeric_limits<double>::infinity();
-        for (int o : plan.old_tets) plan.old_min = std::min(plan.old_min, q[o]);
-        plan.new_min = min_quality(mesh, plan.new_tets, measure);
-        plan.quality_known = true;
-        plan.measure = measure;
-      }
-      if (!accept_swap(plan.old_min, plan.new_min, criterion)) return false;
-      if (options.use_guard) {
-        const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
-        const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
-        if (guard_new < std::min(guard_old, options.guard_floor)) return false;
-      }
-      if (options.dt_guard.on &&
-          !time_step_allows(options.dt_guard, min_quality(mesh, plan.old_tets, Measure::kTimeStep),
-                            min_quality(mesh, plan.new_tets, Measure::kTimeStep)))
-        return false;
-      if (options.dt_guard.on && !nodal_change(plan, change).allows(options.dt_guard, dt_steps))
-        return false;
-      if (!out.have_best || plan.new_min > out.best.new_min) {
-        out.best = std::move(plan);
-        out.have_best = true;
-      }
-      return true;
-    };
-    if (options.remove_edges)
-      for (int e = 0; e < 6; ++e) {
-        if (refused[t] >> e & 1) continue;
-        const int a = tv[kTetEdge[e][0]], b = tv[kTetEdge[e][1]];
-        if (on_constraint[a] && on_constraint[b] && constrained_edges.count(edge_key(a, b)))
-          continue;
-        const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
-        for (int r : ring.tets) read_tet(r);
-        if (!ring.closed) continue;
-        if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
-          for (int r : ring.tets) {
-            const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], a, b);
-            if (le >= 0) out.refusals.push_back({r, static_cast<std::uint16_t>(1u << le)});
-          }
-      }
-    if (options.flip23)
-      for (int f = 0; f < 4; ++f) {
-        if (refused[t] >> (6 + f) & 1) continue;
-        const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
-        if (behind < 0) continue;
-        read_tet(behind / 4);
-        if (!consider(plan_flip23(mesh, constrained, t, f))) {
-          out.refusals.push_back({t, static_cast<std::uint16_t>(1u << (6 + f))});
-          out.refusals.push_back({behind / 4, static_cast<std::uint16_t>(1u << (6 + behind % 4))});
-        }
-      }
-  };
-  // The passes plan the tets of a block of the worst-first order in parallel, on the mesh as it
-  // is at the start of the block, then commit them one by one in that order: a tet whose plan
-  // read a vertex that an earlier commit of the block touched is planned again then. So each
-  // tet's decision is the one the serial sweep makes, for any number of threads.
-  std::vector<long> stamp(static_cast<std::size_t>(mesh.nb_vertices()), 0);  // last commit
-  long nb_commits = 0;
-  const int block_size = options.plan_block;
-  std::vector<TetPlan> plans(static_cast<std::size_t>(block_size));
-  std::vector<char> planned(plans.size());
   VertexStepChange dt_change;
+  auto nodal_change = [&](const SwapPlan& plan) -> const VertexStepChange& {
+    dt_change.clear();
+    for (int o : plan.old_tets)
+      dt_change.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(o)], -1);
+    for (const auto& t : plan.new_tets) dt_change.add(mesh, t.data(), +1);
+    return dt_change;
+  };
   for (int pass = 0; pass < options.max_passes; ++pass) {
     order.clear();
     for (int t = 0; t < mesh.nb_tets(); ++t) {
@@ -239,71 +151,96 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
               [](const Entry& a, const Entry& b) { return a.q != b.q ? a.q < b.q : a.t < b.t; });
     ++stats.passes;
     long nb_done = 0;
-    for (std::size_t block = 0; block < order.size(); block += block_size) {
-      const int n = static_cast<int>(std::min<std::size_t>(block_size, order.size() - block));
-      const long snapshot = nb_commits;
-#pragma omp parallel if (n > 64)
-      {
-        VertexStepChange change;
-#pragma omp for schedule(dynamic, 8)
-        for (int i = 0; i < n; ++i) {
-          const Entry& en = order[block + i];
-          planned[i] =
-              mesh.tets[4 * static_cast<std::size_t>(en.t)] >= 0 && version[en.t] == en.version;
-          // An inconsistent mesh throws: planned again below, serially, where it throws.
-          try {
-            if (planned[i]) plan_tet(en.t, plans[i], change);
-          } catch (...) {
-            planned[i] = 0;
+    for (const Entry& en : order) {
+      const int t = en.t;
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0 || version[t] != en.version) continue;
+      ++stats.nb_tried;
+      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      SwapPlan best;
+      bool have_best = false;
+      // Evaluates a valid plan; true if the criterion accepts it (it becomes best if better).
+      auto consider = [&](SwapPlan&& plan) {
+        if (plan.status != SwapStatus::kOk) return false;
+        if (!plan.quality_known || plan.measure != measure) {
+          plan.old_min = std::numeric_limits<double>::infinity();
+          for (int o : plan.old_tets) plan.old_min = std::min(plan.old_min, q[o]);
+          plan.new_min = min_quality(mesh, plan.new_tets, measure);
+          plan.quality_known = true;
+          plan.measure = measure;
+        }
+        if (!accept_swap(plan.old_min, plan.new_min, criterion)) return false;
+        if (options.use_guard) {
+          const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
+          const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
+          if (guard_new < std::min(guard_old, options.guard_floor)) return false;
+        }
+        if (options.dt_guard.on &&
+            !time_step_allows(options.dt_guard,
+                              min_quality(mesh, plan.old_tets, Measure::kTimeStep),
+                              min_quality(mesh, plan.new_tets, Measure::kTimeStep)))
+          return false;
+        if (options.dt_guard.on && !nodal_change(plan).allows(options.dt_guard, dt_steps))
+          return false;
+        if (!have_best || plan.new_min > best.new_min) {
+          best = std::move(plan);
+          have_best = true;
+        }
+        return true;
+      };
+      if (options.remove_edges)
+        for (int e = 0; e < 6; ++e) {
+          if (refused[t] >> e & 1) continue;
+          const int a = tv[kTetEdge[e][0]], b = tv[kTetEdge[e][1]];
+          if (on_constraint[a] && on_constraint[b] && constrained_edges.count(edge_key(a, b)))
+            continue;
+          const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
+          if (!ring.closed) continue;
+          if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
+            for (int r : ring.tets) {
+              const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], a, b);
+              if (le >= 0) refused[r] |= static_cast<std::uint16_t>(1u << le);
+            }
+        }
+      if (options.flip23)
+        for (int f = 0; f < 4; ++f) {
+          if (refused[t] >> (6 + f) & 1) continue;
+          const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
+          if (behind < 0) continue;
+          if (!consider(plan_flip23(mesh, constrained, t, f))) {
+            refused[t] |= static_cast<std::uint16_t>(1u << (6 + f));
+            refused[behind / 4] |= static_cast<std::uint16_t>(1u << (6 + behind % 4));
           }
         }
-      }
-      for (int i = 0; i < n; ++i) {
-        const Entry& en = order[block + i];
-        const int t = en.t;
-        if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0 || version[t] != en.version) continue;
-        ++stats.nb_tried;
-        TetPlan& tp = plans[i];
-        bool current = planned[i];
-        for (std::size_t k = 0; k < tp.reads.size() && current; ++k)
-          current = stamp[tp.reads[k]] <= snapshot;
-        if (!current) plan_tet(t, tp, dt_change);
-        for (const auto& [r, bits] : tp.refusals) refused[r] |= bits;
-        if (!tp.have_best) continue;
-        SwapPlan& best = tp.best;
+      if (!have_best) continue;
 
-        const std::size_t nb_old = best.old_tets.size(), nb_new = best.new_tets.size();
-        ++nb_commits;
-        for (int o : best.old_tets) {
-          ++version[o];
-          touch(o, pass + 1);
-          for (int k = 0; k < 4; ++k)
-            stamp[mesh.tets[4 * static_cast<std::size_t>(o) + k]] = nb_commits;
-        }
-        if (options.dt_guard.on) nodal_change(best, dt_change).apply(dt_steps);
-        apply_swap(mesh, best, &free_slots);
-        if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
-          q.resize(static_cast<std::size_t>(mesh.nb_tets()));
-          version.resize(q.size(), 0);
-          refused.resize(q.size(), 0);
-        }
-        for (int id : best.new_ids) refused[id] = 0;
-        for (int id : best.new_ids) clear_around(id);
-        for (int id : best.new_ids) {
-          ++version[id];
-          touch(id, pass + 1);
-          q[id] = quality_of(mesh, id, measure);
-        }
-        ++nb_done;
-        if (nb_old == 2 && nb_new == 3) {
-          ++stats.nb_flip23;
-        } else {
-          ++stats.nb_by_ring[nb_old];
-          if (nb_old == 3)
-            ++stats.nb_flip32;
-          else
-            ++stats.nb_edge_removals;
-        }
+      const std::size_t nb_old = best.old_tets.size(), nb_new = best.new_tets.size();
+      for (int o : best.old_tets) {
+        ++version[o];
+        touch(o, pass + 1);
+      }
+      if (options.dt_guard.on) nodal_change(best).apply(dt_steps);
+      apply_swap(mesh, best, &free_slots);
+      if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
+        q.resize(static_cast<std::size_t>(mesh.nb_tets()));
+        version.resize(q.size(), 0);
+        refused.resize(q.size(), 0);
+      }
+      for (int id : best.new_ids) refused[id] = 0;
+      for (int id : best.new_ids) clear_around(id);
+      for (int id : best.new_ids) {
+        ++version[id];
+        touch(id, pass + 1);
+        q[id] = quality_of(mesh, id, measure);
+      }
+      ++nb_done;
+      if (nb_old == 2 && nb_new == 3) {
+        ++stats.nb_flip23;
+      } else {
+        ++stats.nb_by_ring[nb_old];
+        if (nb_old == 3)
+          ++stats.nb_flip32;
+        else
+          ++stats.nb_edge_removals;
       }
     }
     if (nb_done == 0) break;

@@ -3,7 +3,6 @@
 // (ring of 3..7 tets, the 3-2 flip included) on its six edges and every 2-3 flip on its four
 // faces is planned, and the best one the criterion accepts (the local minimum quality rises) is
 // committed. Vertices never move; constrained faces are never removed; regions never mix.
-// The planning runs in parallel (SwapOptions::plan_block), with the serial sweep's result.
 #pragma once
 #include <array>
 #include <limits>
@@ -38,11 +37,6 @@ struct SwapOptions {
   // The time-step guard (time_step_guard.h; off by default): a swap is also refused when the
   // new tets' smallest element time step is below min(the old tets', floor).
   TimeStepGuard dt_guard;
-  // Tets of the worst-first order planned ahead, in parallel, on the mesh as it is at the start
-  // of their block; committed in order, a plan that read a vertex an earlier commit touched is
-  // made again. The decisions are the serial sweep's (plan_block = 1) for any block size and any
-  // number of threads.
-  int plan_block = 2048;
 };
 
 struct SwapStats {

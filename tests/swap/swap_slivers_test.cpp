@@ -6,12 +6,9 @@
 #include <map>
 #include <set>
 
-#include <omp.h>
-
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
-#include "core/quality/time_step_guard.h"
 #include "tests/swap/swap_test_util.h"
 
 namespace cvtmesh {
@@ -111,49 +108,6 @@ TEST(SwapSlivers, TwoRegionsNeverMixAndTheInterfaceIsKept) {
   EXPECT_EQ(constrained_triples(m), tris_before);
   EXPECT_GE(testing::global_min_quality(m, Measure::kQ), min_before);
   for (int r : {1, 2}) EXPECT_NEAR(total_volume(m, r), vol[r], 1e-12 * vol[r]) << "region " << r;
-}
-
-// The tets planned ahead in parallel, committed in order (re-planned when an earlier commit
-// touched what they read): the serial sweep's decisions (plan_block 1, one thread) for any block
-// size and thread count, with the polish's criterion and guards (dihedral flips, Q guard,
-// time-step guard) and with SWAP's.
-TEST(SwapSlivers, PlanningAheadInParallelGivesTheSerialSweepsResult) {
-  for (int polish = 0; polish <= 1; ++polish) {
-    const TetMesh start = unoptimized_cube_sphere();
-    SwapOptions o;
-    if (polish) {
-      o.measure = Measure::kMinAngle;
-      o.quality_threshold = 45;
-      o.use_guard = true;
-      o.guard_floor = 0.4;
-      o.dt_guard = time_step_guard(start, 1.05);
-    }
-    auto run = [&](int block, int threads, SwapStats& st) {
-      const int saved = omp_get_max_threads();
-      omp_set_num_threads(threads);
-      TetMesh m = start;
-      SwapOptions oo = o;
-      oo.plan_block = block;
-      st = swap_slivers(m, oo);
-      omp_set_num_threads(saved);
-      EXPECT_TRUE(check_mesh(m).ok);
-      return m;
-    };
-    SwapStats s1, s2, s3;
-    const TetMesh serial = run(1, 1, s1), ahead = run(2048, 2, s2), small = run(7, 2, s3);
-    EXPECT_GT(s1.nb_flip23 + s1.nb_flip32 + s1.nb_edge_removals, 100) << polish;
-    for (const TetMesh* m : {&ahead, &small}) {
-      EXPECT_TRUE(m->tets == serial.tets) << polish;
-      EXPECT_TRUE(m->adj == serial.adj) << polish;
-      EXPECT_TRUE(m->tet_region == serial.tet_region) << polish;
-    }
-    for (const SwapStats* st : {&s2, &s3}) {
-      EXPECT_EQ(st->nb_tried, s1.nb_tried) << polish;
-      EXPECT_EQ(st->nb_flip23, s1.nb_flip23) << polish;
-      EXPECT_EQ(st->nb_edge_removals, s1.nb_edge_removals) << polish;
-      EXPECT_EQ(st->passes, s1.passes) << polish;
-    }
-  }
 }
 
 TEST(SwapSlivers, RejectsAMeasureWhereLargerIsNotBetter) {
