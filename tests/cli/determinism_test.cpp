@@ -51,9 +51,10 @@ TEST(Determinism, Optimize3dDefaultMethodBinaryMsh) {
                        "out3d.msh");
 }
 
-// A mesh large enough (~6.5k tets) that the parallel stages of the default method run on more
-// than one thread: the flips planned ahead in blocks (SWAP and the polish), the parallel scans of
-// the max-min smoothings and of the time-step guard's nodal sums.
+// A mesh large enough (~6.5k tets) that the parallel per-tet loops of the default method run on
+// two threads (the scans of the max-min smoothings, the swaps' qualities, the time-step guard's
+// nodal sums, each written per tet and reduced in tet order; the Laplacian's colours stay on one
+// thread below 2048 vertices).
 TEST(Determinism, Optimize3dDefaultMethodParallelStagesBinaryMsh) {
   const std::string dir = testing::temp_dir();
   expect_deterministic(dir,
