@@ -54,7 +54,7 @@ bool surface_flip_within(const TetMesh& m, const BoundaryModel& model, const Bou
     double pts[10][3];
     triangle_samples(m.point(apex), m.point(c), m.point(d), pts);
     for (int i = 3; i < 10; ++i)
-      if (model.geometry->distance_to_boundary(pts[i]) > tolerance) return false;
+      if (!model.geometry->within_distance(pts[i], tolerance)) return false;
   }
   for (int x : {a, b, c, d}) {
     if (model.input_xyz.size() < 3 * static_cast<std::size_t>(x) + 3) continue;

@@ -56,7 +56,7 @@ bool fan_within_tolerance(const TetMesh& m, const BoundaryModel& model, const Bo
     double p[10][3];
     triangle_samples(at(w[0]), at(w[1]), at(w[2]), p);
     for (int i = 3; i < 10; ++i)
-      if (model.geometry->distance_to_boundary(p[i]) > hausdorff) return false;
+      if (!model.geometry->within_distance(p[i], hausdorff)) return false;
   }
   // The other side: the input position of every vertex of the fan stays within the tolerance of
   // that vertex's own (new) fan.

@@ -46,6 +46,7 @@ class DiscreteGeometry final : public BoundaryGeometry {
     return curves[c]->closest(p, q);
   }
   double distance_to_boundary(const double* p) const override { return all->distance(p); }
+  bool within_distance(const double* p, double r) const override { return all->any_within(p, r); }
   std::vector<double> samples() const override {
     // The input's boundary vertices, edge midpoints and triangle centroids.
     std::vector<double> s;

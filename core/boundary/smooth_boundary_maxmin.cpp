@@ -73,9 +73,14 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
     // The boundary vertices of poor elements, worst first.
     std::vector<std::pair<double, int>> todo;
     std::vector<double> worst(static_cast<std::size_t>(nv), kInf);
-    for (int t = 0; t < mesh.nb_tets(); ++t) {
+    const int nt = mesh.nb_tets();
+    std::vector<std::array<double, 2>> tet_q(static_cast<std::size_t>(nt));
+#pragma omp parallel for schedule(static, 1024)
+    for (int t = 0; t < nt; ++t)
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) tet_q[t] = measures(mesh, {true, t});
+    for (int t = 0; t < nt; ++t) {
       if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0) continue;
-      const auto q = measures(mesh, {true, t});
+      const auto q = tet_q[t];
       if (q[0] >= o.q_below && q[1] >= o.angle_below) continue;
       for (int k = 0; k < 4; ++k) {
         const int v = mesh.tets[4 * static_cast<std::size_t>(t) + k];

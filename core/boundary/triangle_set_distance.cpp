@@ -82,6 +82,48 @@ double TriangleSetDistance::distance(const double* p) const {
                    (p[2] - q[2]) * (p[2] - q[2]));
 }
 
+namespace {
+
+// An AABB tree traversal that stops at the first triangle whose closest point to p (the same
+// construction as the tree's closest_point) is within r; it visits only the boxes within r.
+struct WithinTraversal {
+  K::Point_3 p;
+  double r;
+  bool found = false;
+
+  bool go_further() const { return !found; }
+  void intersection(const K::Point_3&, const TriPrimitive& primitive) {
+    if (found) return;
+    const K::Point_3 q = K::Construct_projected_point_3()(primitive.datum(), p);
+    const double d =
+        std::sqrt((p.x() - q.x()) * (p.x() - q.x()) + (p.y() - q.y()) * (p.y() - q.y()) +
+                  (p.z() - q.z()) * (p.z() - q.z()));
+    found = d <= r;
+  }
+  template <class Node>
+  bool do_intersect(const K::Point_3&, const Node& node) const {
+    const CGAL::Bbox_3& b = node.bbox();
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double x = p[k], lo = b.min(k), hi = b.max(k);
+      const double e = x < lo ? lo - x : x > hi ? x - hi : 0;
+      d2 += e * e;
+    }
+    // A box is skipped only when it is clearly farther than r (rounding never loses a triangle).
+    return std::sqrt(d2) <= r * (1 + 1e-9);
+  }
+};
+
+}  // namespace
+
+bool TriangleSetDistance::any_within(const double* p, double r) const {
+  if (impl_->triangles.empty() || !(r >= 0)) return false;
+  if (std::isinf(r)) return true;
+  WithinTraversal w{K::Point_3(p[0], p[1], p[2]), r};
+  impl_->tree.traversal(w.p, w);
+  return w.found;
+}
+
 struct SegmentSetDistance::Impl {
   Segments segments;
   SegTree tree;

@@ -18,6 +18,9 @@ class TriangleSetDistance {
   // The closest point q (3) to p on the triangles; false if there are none. Thread-safe.
   bool closest(const double* p, double* q) const;
   double distance(const double* p) const;
+  // Whether some triangle is within distance r of p: distance(p) <= r (up to the rounding of which
+  // triangle is the closest), stopping at the first such triangle. Thread-safe.
+  bool any_within(const double* p, double r) const;
   // The closest point q to p and the index (in the constructor's `tris`, #F) of a triangle it
   // lies on; -1 if there are none. Thread-safe.
   int closest_triangle(const double* p, double* q) const;

@@ -23,6 +23,11 @@ class BoundaryGeometry {
   // Distance from p to the whole reference boundary (every surface patch): the input-side term
   // of the Hausdorff distance.
   virtual double distance_to_boundary(const double* p) const = 0;
+  // Whether distance_to_boundary(p) <= r; a geometry may answer it faster (the discrete one
+  // stops at the first triangle within r instead of finding the closest).
+  virtual bool within_distance(const double* p, double r) const {
+    return distance_to_boundary(p) <= r;
+  }
   // Points sampling the reference boundary (#S by 3), to measure the distance from it to the new
   // boundary (the other side of the Hausdorff distance). May be empty (then one side only).
   virtual std::vector<double> samples() const = 0;

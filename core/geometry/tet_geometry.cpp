@@ -31,8 +31,8 @@ double tet_inradius(const double* a, const double* b, const double* c, const dou
   return 3.0 * std::fabs(tet_volume(a, b, c, d)) / area;
 }
 
-std::array<double, 6> tet_dihedral_angles(const double* a, const double* b, const double* c,
-                                          const double* d) {
+std::array<double, 6> tet_dihedral_cosines(const double* a, const double* b, const double* c,
+                                           const double* d) {
   const double* p[4] = {a, b, c, d};
   // Outward (unnormalised) face normals, face f opposite vertex f.
   static const int F[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -45,14 +45,20 @@ std::array<double, 6> tet_dihedral_angles(const double* a, const double* b, cons
   // The edge (i,j) is shared by the faces opposite the two other vertices k,l; the interior
   // dihedral angle is pi minus the angle between their outward normals.
   static const int E[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  std::array<double, 6> ang{};
+  std::array<double, 6> cs{};
   for (int e = 0; e < 6; ++e) {
     int k = -1, l = -1;
     for (int v = 0; v < 4; ++v)
       if (v != E[e][0] && v != E[e][1]) (k < 0 ? k : l) = v;
-    const double cs = std::clamp(-dot(n[k], n[l]), -1.0, 1.0);
-    ang[e] = std::acos(cs);
+    cs[e] = std::clamp(-dot(n[k], n[l]), -1.0, 1.0);
   }
+  return cs;
+}
+
+std::array<double, 6> tet_dihedral_angles(const double* a, const double* b, const double* c,
+                                          const double* d) {
+  std::array<double, 6> ang = tet_dihedral_cosines(a, b, c, d);
+  for (double& x : ang) x = std::acos(x);
   // For an inverted tet the outward normals point inwards; report the supplementary sense
   // consistently by keeping the same formula (callers check the volume sign).
   return ang;

@@ -16,6 +16,10 @@ double tet_inradius(const double* a, const double* b, const double* c, const dou
 // The six interior dihedral angles (radians), at the edges in kTetEdge order.
 std::array<double, 6> tet_dihedral_angles(const double* a, const double* b, const double* c,
                                           const double* d);
+// Their cosines, clamped to [-1, 1] (tet_dihedral_angles is acos of each): the smallest angle is
+// acos of the largest cosine, without the five other acos.
+std::array<double, 6> tet_dihedral_cosines(const double* a, const double* b, const double* c,
+                                           const double* d);
 // Sum of the squared edge lengths and the longest edge.
 double tet_sum_sq_edges(const double* a, const double* b, const double* c, const double* d);
 

@@ -100,12 +100,14 @@ std::string measure_name(Measure m) {
   return "?";
 }
 
-double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m) {
-  // One value per tet, whatever the order its vertices are listed in: the rounding of a near-flat
-  // tet's volume and angles depends on that order (a 1e-14 sliver's dihedral angle can come out
-  // as 0 in one order and 1e-8 in another), and the swaps compare qualities of the same tets seen
-  // from different edges (a refused cavity must stay refused). The vertices are sorted by their
-  // coordinates, then the last two exchanged if that was an odd permutation (same orientation).
+namespace {
+
+// One value per tet, whatever the order its vertices are listed in: the rounding of a near-flat
+// tet's volume and angles depends on that order (a 1e-14 sliver's dihedral angle can come out
+// as 0 in one order and 1e-8 in another), and the swaps compare qualities of the same tets seen
+// from different edges (a refused cavity must stay refused). The vertices are sorted by their
+// coordinates, then the last two exchanged if that was an odd permutation (same orientation).
+void canonical_order(const double*& a, const double*& b, const double*& c, const double*& d) {
   const double* p[4] = {a, b, c, d};
   bool odd = false;
   for (int i = 1; i < 4; ++i)
@@ -119,34 +121,61 @@ double tet_quality(const double* a, const double* b, const double* c, const doub
   b = p[1];
   c = p[2];
   d = p[3];
+}
+
+double q_of(const double* a, const double* b, const double* c, const double* d, double vol) {
+  const double s = tet_sum_sq_edges(a, b, c, d);
+  if (s == 0) return 0;
+  return 72.0 * std::sqrt(3.0) * vol / (s * std::sqrt(s));
+}
+
+double radius_ratio_of(const double* a, const double* b, const double* c, const double* d,
+                       double vol) {
+  const double r = tet_inradius(a, b, c, d);
+  const double R = tet_circumradius(a, b, c, d);
+  if (R == 0 || !std::isfinite(R) || vol == 0) return 0;
+  return 3.0 * r / R * sgn(vol);
+}
+
+// acos decreases: the smallest angle has the largest cosine.
+double min_angle_of(const std::array<double, 6>& cs, double vol) {
+  const double v = std::acos(*std::max_element(cs.begin(), cs.end())) * kDeg;
+  return vol < 0 ? -v : v;
+}
+
+double max_angle_of(const std::array<double, 6>& cs) {
+  return std::acos(*std::min_element(cs.begin(), cs.end())) * kDeg;
+}
+
+}  // namespace
+
+double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m) {
+  canonical_order(a, b, c, d);
   const double vol = tet_volume(a, b, c, d);
   switch (m) {
-    case Measure::kQ: {
-      const double s = tet_sum_sq_edges(a, b, c, d);
-      if (s == 0) return 0;
-      return 72.0 * std::sqrt(3.0) * vol / (s * std::sqrt(s));
-    }
-    case Measure::kRadiusRatio: {
-      const double r = tet_inradius(a, b, c, d);
-      const double R = tet_circumradius(a, b, c, d);
-      if (R == 0 || !std::isfinite(R) || vol == 0) return 0;
-      return 3.0 * r / R * sgn(vol);
-    }
-    case Measure::kMinAngle: {
-      const auto ang = tet_dihedral_angles(a, b, c, d);
-      const double v = *std::min_element(ang.begin(), ang.end()) * kDeg;
-      return vol < 0 ? -v : v;
-    }
-    case Measure::kMaxAngle: {
-      const auto ang = tet_dihedral_angles(a, b, c, d);
-      return *std::max_element(ang.begin(), ang.end()) * kDeg;
-    }
+    case Measure::kQ:
+      return q_of(a, b, c, d, vol);
+    case Measure::kRadiusRatio:
+      return radius_ratio_of(a, b, c, d, vol);
+    case Measure::kMinAngle:
+      return min_angle_of(tet_dihedral_cosines(a, b, c, d), vol);
+    case Measure::kMaxAngle:
+      return max_angle_of(tet_dihedral_cosines(a, b, c, d));
     case Measure::kGmshIcn:
       return tet_icn(a, b, c, d);
     case Measure::kTimeStep:
       return tet_time_step(a, b, c, d);
   }
   return 0;
+}
+
+std::array<double, 4> tet_table_qualities(const double* a, const double* b, const double* c,
+                                          const double* d) {
+  canonical_order(a, b, c, d);
+  const double vol = tet_volume(a, b, c, d);
+  const auto cs = tet_dihedral_cosines(a, b, c, d);
+  return {q_of(a, b, c, d, vol), radius_ratio_of(a, b, c, d, vol), min_angle_of(cs, vol),
+          max_angle_of(cs)};
 }
 
 double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m) {

@@ -2,6 +2,7 @@
 // (Gmsh qmTetrahedron style). Inverted elements get a negative value for the shape measures,
 // never a silent 0.
 #pragma once
+#include <array>
 #include <string>
 
 namespace cvtmesh {
@@ -25,6 +26,10 @@ std::string measure_name(Measure m);
 // Tetrahedron a,b,c,d (each 3 doubles). Positive orientation = positive volume. Bitwise the same
 // value for every orientation-preserving order of the four vertices (even permutations).
 double tet_quality(const double* a, const double* b, const double* c, const double* d, Measure m);
+// The four measures of the quality tables at once (Q, radius ratio, min and max dihedral angle in
+// degrees), each bitwise tet_quality's, for the cost of about one.
+std::array<double, 4> tet_table_qualities(const double* a, const double* b, const double* c,
+                                          const double* d);
 // Triangle a,b,c; dim = 2 (x,y; counter-clockwise positive) or 3 (x,y,z; always >= 0).
 double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m);
 

@@ -1,6 +1,7 @@
 #include "core/quality/quality_stats.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 namespace cvtmesh {
@@ -78,10 +79,25 @@ QualityStats quality_stats_from_values(const std::vector<double>& q, const std::
 }
 
 QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
-  return quality_stats_from_values(element_qualities(mesh, Measure::kQ),
-                                   element_qualities(mesh, Measure::kRadiusRatio),
-                                   element_qualities(mesh, Measure::kMinAngle),
-                                   element_qualities(mesh, Measure::kMaxAngle), 3, label);
+  // The four measures of each tet in one pass (in parallel), the dead slots squeezed out in
+  // order: the same values as four element_qualities, for any number of threads.
+  const int nt = mesh.nb_tets();
+  std::vector<std::array<double, 4>> all(static_cast<std::size_t>(nt));
+  std::vector<char> live(static_cast<std::size_t>(nt));
+#pragma omp parallel for schedule(static, 1024)
+  for (int t = 0; t < nt; ++t) {
+    const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    live[t] = v[0] >= 0;
+    if (live[t])
+      all[t] = tet_table_qualities(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                   mesh.point(v[3]));
+  }
+  std::vector<double> m[4];
+  for (auto& x : m) x.reserve(static_cast<std::size_t>(nt));
+  for (int t = 0; t < nt; ++t)
+    if (live[t])
+      for (int k = 0; k < 4; ++k) m[k].push_back(all[t][k]);
+  return quality_stats_from_values(m[0], m[1], m[2], m[3], 3, label);
 }
 
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {

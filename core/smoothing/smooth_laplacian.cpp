@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/geometry/predicates.h"
+#include "core/mesh/colour_vertices.h"
 #include "core/mesh/vertex_tets.h"
 
 namespace cvtmesh {
@@ -37,38 +38,32 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   // that no two vertices of a colour share a tet; the vertices of one colour then move
   // independently (each reads its neighbours, of other colours, and writes its own point and the
   // qualities of its own star), in parallel, and the result does not depend on the thread count.
-  std::vector<int> colour(nv, -1), colour_offset, by_colour;
-  {
-    std::vector<int> mark;  // mark[c] == v: colour c is taken by a neighbour of v
-    int nb_colours = 0;
-    for (int v = 0; v < nv; ++v) {
-      if (mesh.vclass[v].dim < 3 || star.nb_tets_of(v) == 0) continue;
-      for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
-        for (int k = 0; k < 4; ++k) {
-          const int c = colour[mesh.tets[4 * static_cast<std::size_t>(*t) + k]];
-          if (c >= 0) mark[c] = v;
-        }
-      int c = 0;
-      while (c < nb_colours && mark[c] == v) ++c;
-      if (c == nb_colours) mark.push_back(-1), ++nb_colours;
-      colour[v] = c;
-    }
-    colour_offset.assign(nb_colours + 1, 0);
-    for (int v = 0; v < nv; ++v)
-      if (colour[v] >= 0) ++colour_offset[colour[v] + 1];
-    for (int c = 0; c < nb_colours; ++c) colour_offset[c + 1] += colour_offset[c];
-    by_colour.resize(colour_offset[nb_colours]);
-    std::vector<int> fill(colour_offset.begin(), colour_offset.end() - 1);
-    for (int v = 0; v < nv; ++v)
-      if (colour[v] >= 0) by_colour[fill[colour[v]]++] = v;
-  }
-  const int nb_colours = static_cast<int>(colour_offset.size()) - 1;
+  std::vector<int> order;
+  for (int v = 0; v < nv; ++v)
+    if (mesh.vclass[v].dim == 3 && star.nb_tets_of(v) > 0) order.push_back(v);
+  const VertexColouring colours = colour_vertices(nv, order, [&](int v, std::vector<int>& out) {
+    for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+      out.insert(out.end(), &mesh.tets[4 * static_cast<std::size_t>(*t)],
+                 &mesh.tets[4 * static_cast<std::size_t>(*t)] + 4);
+  });
+  const std::vector<int>& colour_offset = colours.offset;
+  const std::vector<int>& by_colour = colours.vertices;
+  const int nb_colours = colours.nb_colours();
   long nb_moved = 0, nb_half = 0, nb_rejected = 0;
   // The nodal sums of the time-step guard, updated after each colour from its accepted moves
   // (in vertex order: the same sums whatever the thread count).
   const bool guard = options.dt_guard.on;
   VertexTimeSteps steps;
   if (guard) steps = vertex_time_steps(mesh);
+  // Each tet's element time step (the guard's), kept current as its star's moves are accepted.
+  std::vector<double> tdt;
+  if (guard) {
+    tdt.assign(static_cast<std::size_t>(nt), std::numeric_limits<double>::infinity());
+#pragma omp parallel for schedule(static, 1024)
+    for (int t = 0; t < nt; ++t)
+      if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0)
+        tdt[t] = quality_of(mesh, t, Measure::kTimeStep);
+  }
   std::vector<VertexStepChange> changes;
   std::vector<char> changed;
   std::vector<std::array<double, 3>> origin;  // of the accepted moves
@@ -84,7 +79,7 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
 #pragma omp parallel reduction(+ : nb_moved, nb_half, nb_rejected) if (colour_offset[c + 1] - colour_offset[c] > 2048)
       {
         std::vector<int> nbrs;
-        std::vector<double> new_q;
+        std::vector<double> new_q, new_dt;
         VertexStepChange before, after;
 #pragma omp for schedule(static, 256)
         for (int i = colour_offset[c]; i < colour_offset[c + 1]; ++i) {
@@ -108,7 +103,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
 
           double* P = mesh.point(v);
           const double orig[3] = {P[0], P[1], P[2]};
-          const double old_dt = guard ? min_time_step(mesh, star.begin_of(v), star.end_of(v)) : 0;
+          double old_dt = std::numeric_limits<double>::infinity();
+          if (guard)
+            for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+              old_dt = std::min(old_dt, tdt[*t]);
           if (guard) {
             before.clear();
             for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
@@ -132,8 +130,13 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
               new_min = std::min(new_min, new_q.back());
             }
             if (ok && new_min >= old_min && guard) {
-              ok = time_step_allows(options.dt_guard, old_dt,
-                                    min_time_step(mesh, star.begin_of(v), star.end_of(v)));
+              new_dt.clear();
+              double new_min_dt = std::numeric_limits<double>::infinity();
+              for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
+                new_dt.push_back(quality_of(mesh, *t, Measure::kTimeStep));
+                new_min_dt = std::min(new_min_dt, new_dt.back());
+              }
+              ok = time_step_allows(options.dt_guard, old_dt, new_min_dt);
               if (ok) {
                 after = before;
                 for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
@@ -151,6 +154,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
               moved = true;
               std::size_t j = 0;
               for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) q[*t] = new_q[j++];
+              j = 0;
+              if (guard)
+                for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+                  tdt[*t] = new_dt[j++];
               ++(attempt == 0 ? nb_moved : nb_half);
             }
           }
@@ -173,8 +180,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
           }
           const int v = by_colour[colour_offset[c] + static_cast<int>(j)];
           for (int k = 0; k < 3; ++k) mesh.point(v)[k] = origin[j][k];
-          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+          for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
             q[*t] = quality_of(mesh, *t, options.measure);
+            tdt[*t] = quality_of(mesh, *t, Measure::kTimeStep);
+          }
           ++nb_rejected;
           --(changed[j] == 1 ? nb_moved : nb_half);
         }

@@ -102,12 +102,15 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   std::vector<unsigned> version(q.size(), 0);
   refused.assign(q.size(), 0);
   std::vector<int> free_slots;
-  for (int t = 0; t < mesh.nb_tets(); ++t) {
+  const int nt0 = mesh.nb_tets();
+#pragma omp parallel for schedule(static, 1024)
+  for (int t = 0; t < nt0; ++t)
+    if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) q[t] = quality_of(mesh, t, measure);
+  for (int t = 0; t < nt0; ++t) {
     if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0) {
       free_slots.push_back(t);
       continue;
     }
-    q[t] = quality_of(mesh, t, measure);
     ++stats.nb_tets_before;
   }
   stats.min_before = global_min(q, mesh);

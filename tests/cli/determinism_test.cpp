@@ -51,6 +51,18 @@ TEST(Determinism, Optimize3dDefaultMethodBinaryMsh) {
                        "out3d.msh");
 }
 
+// A mesh large enough (~6.5k tets) that the parallel per-tet loops of the default method run on
+// two threads (the scans of the max-min smoothings, the swaps' qualities, the time-step guard's
+// nodal sums, each written per tet and reduced in tet order; the Laplacian's colours stay on one
+// thread below 2048 vertices).
+TEST(Determinism, Optimize3dDefaultMethodParallelStagesBinaryMsh) {
+  const std::string dir = testing::temp_dir();
+  expect_deterministic(dir,
+                       "optimize '" + testing::geo_path("cube_sphere.geo") +
+                           "' --set h=0.1 --set h_ball=0.08 --binary -q -o out3d_par.msh",
+                       "out3d_par.msh");
+}
+
 TEST(Determinism, Perturb2dThenOptimize2dBinaryMsh) {
   const std::string dir = testing::temp_dir();
   const std::string geo = testing::geo_path("washer.geo");

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -100,6 +101,43 @@ TEST(TetQuality, CornerTetDihedralAngles) {
               std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
   // Q = 72 sqrt3 (1/6) / (3 + 3*2)^1.5
   EXPECT_NEAR(tet_quality(a, b, c, d, Measure::kQ), 12 * std::sqrt(3.0) / 27.0, 1e-12);
+}
+
+// The table's four measures at once are tet_quality's to the bit, and the min / max dihedral
+// angles are those of tet_dihedral_angles: on random tets of both orientations, flat ones and
+// slivers.
+TEST(TetQuality, TheTableMeasuresAtOnceAreEachMeasuresBits) {
+  unsigned state = 2024;
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / double(1 << 24);
+  };
+  const double e = 1e-14;
+  std::vector<std::array<std::array<double, 3>, 4>> tets = {
+      {{{0.1, 0.2, 0.3 + e}, {1.1, 0.23, 0.3 - e}, {1.13, 1.17, 0.3 + e}, {0.07, 1.21, 0.3 - e}}},
+      {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 0}}}};
+  for (int i = 0; i < 2000; ++i) {
+    std::array<std::array<double, 3>, 4> t{};
+    for (auto& p : t)
+      for (double& x : p) x = rnd();
+    if (i % 3 == 0)  // a near-sliver: the fourth point close to the plane of the first three
+      for (int k = 0; k < 3; ++k)
+        t[3][k] = (t[0][k] + t[1][k] + t[2][k]) / 3 + 1e-3 * (rnd() - 0.5);
+    tets.push_back(t);
+  }
+  for (const auto& t : tets) {
+    const double *a = t[0].data(), *b = t[1].data(), *c = t[2].data(), *d = t[3].data();
+    const auto all = tet_table_qualities(a, b, c, d);
+    EXPECT_EQ(all[0], tet_quality(a, b, c, d, Measure::kQ));
+    EXPECT_EQ(all[1], tet_quality(a, b, c, d, Measure::kRadiusRatio));
+    EXPECT_EQ(all[2], tet_quality(a, b, c, d, Measure::kMinAngle));
+    EXPECT_EQ(all[3], tet_quality(a, b, c, d, Measure::kMaxAngle));
+    const auto ang = tet_dihedral_angles(a, b, c, d);
+    const double lo = *std::min_element(ang.begin(), ang.end()) * 180 / M_PI;
+    const double hi = *std::max_element(ang.begin(), ang.end()) * 180 / M_PI;
+    EXPECT_NEAR(std::fabs(all[2]), lo, 1e-9);
+    EXPECT_NEAR(all[3], hi, 1e-9);
+  }
 }
 
 TEST(TriQuality, EquilateralIsOneAndKnownAngles) {
