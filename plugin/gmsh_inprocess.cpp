@@ -3,7 +3,6 @@
 #include <gmsh.h>
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -14,6 +13,7 @@
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/read_mesh.h"
 #include "core/io/read_sizing_reference.h"
 #include "core/pipeline/option_schema.h"
 #include "core/util/error.h"
@@ -153,15 +153,12 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& given) {
   // model file (.geo, STEP, ...) would be meshed in the caller's session and set its options.
   if (sizing_is_path(options.optimize) && !options.optimize.sizing_reference) {
     const std::string& path = options.optimize.sizing;
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    for (const char* model : {".geo", ".step", ".stp", ".brep", ".iges", ".igs", ".xao"})
-      if (ext == model)
-        throw InputError("sizing reference '" + path +
-                         "': a model file; inside a Gmsh session the reference must be a mesh "
-                         "file (mesh the model and save it as .msh first, or use the CLI's "
-                         "--sizing, which meshes it in a session of its own)");
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec) && read_mesh_meshes_a_model(path))
+      throw InputError("sizing reference '" + path +
+                       "': a model file; inside a Gmsh session the reference must be a mesh "
+                       "file (mesh the model and save it as .msh first, or use the CLI's "
+                       "--sizing, which meshes it in a session of its own)");
     options.optimize.sizing_reference =
         read_sizing_reference(path, options.dim == 2 || options.dim == 3 ? options.dim : -1);
   }

@@ -28,6 +28,13 @@ OptionSpec number(std::string name, std::string flag, OptionField f, double lo, 
   return s;
 }
 
+// An option whose -1 stands for the dimension's default (filled in by resolve()).
+OptionSpec with_dimension_default(OptionSpec s) {
+  s.special = -1;
+  s.has_special = true;
+  return s;
+}
+
 OptionSpec boolean(std::string name, std::string flag, bool OptimizeOptions::*f, std::string help,
                    int dims = kDim23, int fronts = kCli | kPython) {
   OptionSpec s = number(std::move(name), std::move(flag), f, 0, 1, std::move(help), dims, fronts);
@@ -55,9 +62,7 @@ std::vector<OptionSpec> make_schema() {
                           "3D, 1000 in 2D)",
                           kDim23, kAllFronts);
     s.panel = "1Max iterations";
-    s.special = -1;
-    s.has_special = true;
-    v.push_back(s);
+    v.push_back(with_dimension_default(s));
   }
   {
     OptionSpec s = number("tolerance", "--tolerance", &O::tolerance, 0, kInf,
@@ -65,9 +70,7 @@ std::vector<OptionSpec> make_schema() {
                           "the dimension's default: 1e-5 in 3D, 1e-8 in 2D)",
                           kDim23, kAllFronts);
     s.panel = "2Tolerance";
-    s.special = -1;
-    s.has_special = true;
-    v.push_back(s);
+    v.push_back(with_dimension_default(s));
   }
   {
     OptionSpec s;
@@ -120,9 +123,7 @@ std::vector<OptionSpec> make_schema() {
                           "step (0 = Lloyd's step with relaxation/anderson; -1 = the dimension's "
                           "default: 5 in 3D, 0 in 2D). The paper's plain Lloyd: lbfgs 0, "
                           "anderson 0, relaxation 1");
-    s.special = -1;
-    s.has_special = true;
-    v.push_back(s);
+    v.push_back(with_dimension_default(s));
   }
   v.push_back(number("hops", "--hops", &O::hops, 0, 100000,
                      "basin-hopping trials after Lloyd converges (0 = off): kick every free "
