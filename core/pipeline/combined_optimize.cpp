@@ -42,7 +42,9 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
     stats.iterations = it;
     const QualityStats now = quality_stats(mesh, "CombOpt");
     if (progress) progress(it, now);
-    const bool improved = now.q_avg > prev.q_avg + options.tolerance ||
+    const double avg_tolerance =
+        options.average_tolerance >= 0 ? options.average_tolerance : options.tolerance;
+    const bool improved = now.q_avg > prev.q_avg + avg_tolerance ||
                           now.q_min > prev.q_min + options.tolerance ||
                           now.min_angle > prev.min_angle + options.angle_tolerance;
     prev = now;

@@ -154,6 +154,7 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
   CombinedOptions co;
   co.extra_smoothing = std::move(boundary_smoothing);
   co.max_iterations = o.max_iterations;
+  co.average_tolerance = 5e-4;
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
   co.swap.guard_floor = o.polish_q_floor;
