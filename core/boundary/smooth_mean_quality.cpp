@@ -147,12 +147,7 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
       ++stats.nb_tried;
       double* P = mesh.point(v);
       const Vec3 start = vec3(P);
-      double lmin = kInf;
-      for (const int* s = b; s != e; ++s)
-        for (int j = 0; j < 4; ++j) {
-          const int w = tet_of(mesh, *s)[j];
-          if (w != v) lmin = std::min(lmin, std::sqrt(dist2(P, mesh.point(w))));
-        }
+      const double lmin = shortest_star_edge(mesh, b, e, v);
       if (!(lmin > 0) || lmin == kInf) continue;
       // The guards and the objective at the current position of v; false if a guard fails.
       auto evaluate = [&](double& sum) {

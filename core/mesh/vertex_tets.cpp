@@ -1,5 +1,11 @@
 #include "core/mesh/vertex_tets.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/geometry/vec3.h"
+
 namespace cvtmesh {
 namespace {
 
@@ -37,6 +43,17 @@ VertexTets vertex_tets_of(const TetMesh& mesh, const std::vector<int>& vertices)
   std::vector<char> wanted(mesh.nb_vertices(), 0);
   for (int v : vertices) wanted[v] = 1;
   return build_stars(mesh, [&wanted](int v) { return wanted[v] != 0; });
+}
+
+double shortest_star_edge(const TetMesh& mesh, const int* b, const int* e, int v) {
+  double lmin = std::numeric_limits<double>::infinity();
+  const double* P = mesh.point(v);
+  for (const int* s = b; s != e; ++s)
+    for (int j = 0; j < 4; ++j) {
+      const int w = mesh.tets[4 * static_cast<std::size_t>(*s) + j];
+      if (w != v) lmin = std::min(lmin, std::sqrt(dist2(P, mesh.point(w))));
+    }
+  return lmin;
 }
 
 }  // namespace cvtmesh

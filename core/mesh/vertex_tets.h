@@ -25,4 +25,9 @@ VertexTets vertex_tets(const TetMesh& mesh);
 // vertices of a large mesh.
 VertexTets vertex_tets_of(const TetMesh& mesh, const std::vector<int>& vertices);
 
+// The length of the shortest edge from v to the other vertices of the tets [b, e) (v's star, as
+// VertexTets or VertexStar list it); +inf for an empty star. The smoothings scale their steps by
+// it.
+double shortest_star_edge(const TetMesh& mesh, const int* b, const int* e, int v);
+
 }  // namespace cvtmesh

@@ -131,12 +131,7 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
         double* P = mesh.point(v);
         const Vec3 start = vec3(P);
         // Finite-difference step: a small fraction of the shortest edge at v.
-        double lmin = kInf;
-        for (const int* s = b; s != e; ++s)
-          for (int j = 0; j < 4; ++j) {
-            const int w = tet_of(mesh, *s)[j];
-            if (w != v) lmin = std::min(lmin, std::sqrt(dist2(P, mesh.point(w))));
-          }
+        const double lmin = shortest_star_edge(mesh, b, e, v);
         const double h = 1e-6 * lmin;
         sq.resize(n);
         sa.resize(n);
