@@ -107,8 +107,8 @@ std::string histogram_script(const std::vector<QualityHistogram>& series) {
        std::string(buf) +
        "View[cvt_h].LineWidth = 2;\n"
        "View[cvt_h].AutoPosition = 0;\nView[cvt_h].PositionX = 60;\nView[cvt_h].PositionY = 40;\n"
-       "View[cvt_h].Width = General.GraphicsWidth * 0.3;\n"
-       "View[cvt_h].Height = General.GraphicsHeight * 0.25;\n";
+       "View[cvt_h].Width = General.GraphicsWidth * 0.26;\n"
+       "View[cvt_h].Height = General.GraphicsHeight * 0.22;\n";
   return s;
 }
 
