@@ -208,6 +208,12 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
     if (j - i != 2) return CollapseCheck::kNotSurface;
     i = j;
   }
+  // The volume change (the tets on (v, w) go flat): cheap, and what stops the femur's collapses
+  // once the budget is spent, so first.
+  const double* pw = m.point(w);
+  if (o.volume_budget) {
+    if (!o.volume_budget->admits(m, star, v, pw, p.delta)) return CollapseCheck::kVolume;
+  }
   // The link condition: Lk(v) and Lk(w) meet exactly in Lk(vw).
   {
     const Link lv = vertex_link(m, star, v), lw = vertex_link(m, star, w);
@@ -217,7 +223,6 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
       return CollapseCheck::kLink;
   }
   // The tets: those on (v, w) vanish, the others get w for v.
-  const double* pw = m.point(w);
   auto at = [&](int x) { return x == v ? pw : m.point(x); };
   Minima before, after;
   for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {
@@ -299,8 +304,6 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
     for (const Edge& e : spokes)
       if (!covered(e[1], {e[1]})) return CollapseCheck::kHausdorff;
   }
-  if (o.volume_budget && !o.volume_budget->admits(m, star, v, pw, p.delta))
-    return CollapseCheck::kVolume;
   return CollapseCheck::kOk;
 }
 
@@ -341,6 +344,8 @@ BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& mode
   if (!model.geometry || !(o.short_fraction > 0)) return stats;
   if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
   bool changed = false;
+  std::vector<char> changed_last;  // the vertices whose stars the last pass changed
+  std::vector<char> volume_last;   // those whose collapse the budget refused (it may loosen)
   for (int pass = 0; pass < o.passes; ++pass) {
     ++stats.passes;
     const VertexTets star = vertex_tets(mesh);
@@ -362,6 +367,7 @@ BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& mode
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     stats.nb_candidates += static_cast<long>(edges.size());
     std::vector<char> dirty(static_cast<std::size_t>(mesh.nb_vertices()), 0);
+    std::vector<char> volume_now(dirty.size(), 0);  // v: a collapse of v refused on the budget
     auto clean_star = [&](int x) {
       if (dirty[x]) return false;
       for (const int* t = star.begin_of(x); t != star.end_of(x); ++t)
@@ -369,14 +375,26 @@ BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& mode
           if (dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]]) return false;
       return true;
     };
+    // After the first pass, only the edges whose stars the last pass changed (or left for this
+    // one): the others were refused on the same stars (the budget only tightens, up to the
+    // rare collapse that adds volume).
+    auto touched = [&](int x) {
+      if (pass == 0 || changed_last[x] || volume_last[x]) return true;
+      for (const int* t = star.begin_of(x); t != star.end_of(x); ++t)
+        for (int k = 0; k < 4; ++k)
+          if (changed_last[mesh.tets[4 * static_cast<std::size_t>(*t) + k]]) return true;
+      return false;
+    };
     long collapsed = 0;
     for (const auto& [r, v, w] : edges) {
+      if (!touched(v) && !touched(w)) continue;
       if (!clean_star(v) || !clean_star(w)) continue;
       ++stats.nb_tried;
       CollapsePlan plan;
-      if (plan_boundary_collapse(mesh, model, star, fans, spacing, v, w, o, plan) !=
-          CollapseCheck::kOk)
-        continue;
+      const CollapseCheck st =
+          plan_boundary_collapse(mesh, model, star, fans, spacing, v, w, o, plan);
+      if (st == CollapseCheck::kVolume) volume_now[v] = 1;
+      if (st != CollapseCheck::kOk) continue;
       // Every tet that changes holds v: its vertices' stars and fans are stale for this pass.
       for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
         for (int k = 0; k < 4; ++k) dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]] = 1;
@@ -385,6 +403,8 @@ BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& mode
       ++stats.nb_collapsed;
     }
     if (collapsed == 0) break;
+    changed_last.swap(dirty);
+    volume_last.swap(volume_now);
     compact_boundary_triangles(mesh);
     mesh.adj.clear();
     compact_tets(mesh);

@@ -20,7 +20,9 @@
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/check_mesh.h"
+#include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
+#include "core/util/error.h"
 #include "core/swap/compact_tets.h"
 #include "tests/support/test_meshes.h"
 
@@ -243,6 +245,69 @@ TEST(CollapseBoundaryEdges, ASingleTetIsRefusedByTheLinkCondition) {
   all.short_fraction = 1e9;
   EXPECT_EQ(collapse_boundary_edges(m, b, all).nb_collapsed, 0);
   EXPECT_EQ(m.tets, before.tets);
+}
+
+// verify_optimized accepts the coarsened box only when told that the boundary may lose vertices
+// (a free-boundary run with collapses), and still refuses a surface whose topology changed.
+TEST(CollapseBoundaryEdges, VerifyAcceptsCollapsesOnlyWhenToldAndKeepsTheTopologyCheck) {
+  const TetMesh before = fine_faced_box();
+  TetMesh m = before;
+  BoundaryModel b = make_discrete_boundary(m);
+  ASSERT_GT(collapse_boundary_edges(m, b).nb_collapsed, 0);
+  VerifyOptions vo;
+  vo.boundary_moves = true;
+  vo.volume_tolerance = 1e-9;
+  EXPECT_THROW(verify_optimized(before, m, vo), InvariantError);
+  vo.boundary_collapses = true;
+  EXPECT_NO_THROW(verify_optimized(before, m, vo));
+  // One box face's triangles relabelled as two surfaces: each now has boundary edges it did not.
+  TetMesh split = m;
+  const int s0 = split.tri_surface[0];
+  for (int f = 0, k = 0; f < split.nb_tris(); ++f)
+    if (split.tri_surface[f] == s0 && (k++ % 2)) split.tri_surface[f] = 777;
+  EXPECT_THROW(verify_optimized(before, split, vo), InvariantError);
+}
+
+// Through optimize(): the default (free boundary) removes surface vertices of the fine-faced box
+// and drops them from the result (no orphan node), an orphan node of the input is kept, the
+// result is valid; with coarsen_surface = 0 or fix_boundary no vertex is removed.
+TEST(CollapseBoundaryEdges, OptimizeDropsTheRemovedVerticesAndKeepsTheInputsOrphans) {
+  MeshData input;
+  input.dim = 3;
+  input.tet = fine_faced_box();
+  // An orphan node (a vertex of no element), far from the box.
+  input.tet.xyz.insert(input.tet.xyz.end(), {10, 10, 10});
+  input.tet.vclass.push_back(input.tet.vclass.back());
+  const int n0 = input.tet.nb_vertices();
+  auto used = [](const TetMesh& m) {
+    std::vector<char> u(m.nb_vertices(), 0);
+    for (int v : m.tets) u[v] = 1;
+    int n = 0;
+    for (char c : u) n += c;
+    return n;
+  };
+  OptimizeOptions o;
+  o.max_iterations = 10;
+  MeshData free = input;
+  const OptimizeResult r = optimize(free, o);
+  ASSERT_TRUE(r.boundary_free) << (r.notes.empty() ? "" : r.notes.front());
+  EXPECT_GT(r.nb_boundary_removed, 0);
+  EXPECT_EQ(free.tet.nb_vertices(), n0 - r.nb_boundary_removed);
+  EXPECT_EQ(used(free.tet), free.tet.nb_vertices() - 1);  // only the input's orphan is unused
+  const double* p = free.tet.point(free.tet.nb_vertices() - 1);
+  EXPECT_EQ(p[0], 10);
+  EXPECT_EQ(p[2], 10);
+  const MeshCheck c = check_mesh(free.tet);
+  ASSERT_TRUE(c.ok) << c.problems.front();
+  for (const bool fixed : {false, true}) {
+    MeshData same = input;
+    OptimizeOptions oo = o;
+    oo.coarsen_surface = fixed ? 0.7 : 0;
+    oo.fix_boundary = fixed;
+    const OptimizeResult rr = optimize(same, oo);
+    EXPECT_EQ(rr.nb_boundary_removed, 0);
+    EXPECT_EQ(same.tet.nb_vertices(), n0);
+  }
 }
 
 }  // namespace
