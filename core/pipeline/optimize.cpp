@@ -772,6 +772,38 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     if (!o.never_worse) throw;
     failure = "'" + method + "' failed (" + e.what() + ")";
   }
+  // A free boundary that failed after the surface coarsening removed vertices (igl_bunny: the
+  // input boundary ended farther than the Hausdorff bound from the coarser one, and the local
+  // repairs cannot bring a removed vertex back) is run again without the coarsening first.
+  if (!failure.empty() && !o.fix_boundary && method == "cvdt+swap+smooth" &&
+      r.nb_boundary_removed > 0) {
+    OptimizeOptions no = oo;
+    no.coarsen_surface = 0;
+    try {
+      RestoreNote rn;
+      OptimizeResult f;
+      f.method = method;
+      TetMesh m = run_method3(input, method, no, f, ref, &rn);
+      const std::string worse = worse_than(quality_stats(m, ""), r.before);
+      if (worse.empty()) {
+        std::vector<std::string> notes = r.notes;
+        notes.push_back(failure + "; '" + method +
+                        "' without the surface coarsening is kept instead");
+        if (!rn.worse.empty()) notes.push_back(restore_succeeded(method, rn, f));
+        notes.insert(notes.end(), f.notes.begin(), f.notes.end());
+        const QualityStats before = r.before;
+        r = f;
+        r.before = before;
+        r.notes = notes;
+        data.tet = std::move(m);
+        failure.clear();
+      } else {
+        failure += "; without the surface coarsening it made the mesh worse (" + worse + ")";
+      }
+    } catch (const InvariantError& e) {
+      failure += std::string("; without the surface coarsening it failed too (") + e.what() + ")";
+    }
+  }
   // A failure of the free boundary (a bound it broke, a surface it made cross itself: issue 14's
   // igl_armadillo) need not cost the volume's optimization: the same method with the boundary
   // fixed comes next, then the polish alone.

@@ -120,8 +120,9 @@ struct OptimizeOptions {
   int boundary_lloyd_rounds = 10;
   // Free boundary: passes of the average-quality smoothing at the end of the run (every vertex,
   // the boundary ones on their entity: core/boundary/smooth_mean_quality.h), each between flips
-  // accepted on the average (swap_slivers' sum_criterion); 0 = none.
-  int mean_passes = 1;
+  // accepted on the average (swap_slivers' sum_criterion); 0 = none. 2 since the surface
+  // coarsening (the femur: avg Q 0.8487 with one pass, 0.8517 with two, for 0.2 s).
+  int mean_passes = 2;
   // Free boundary: surface coarsening by boundary edge collapse after the first Lloyd
   // (core/boundary/collapse_boundary_edges.h): a surface edge shorter than this fraction of the
   // interior spacing near it is collapsed (its surface vertex removed), under the Hausdorff

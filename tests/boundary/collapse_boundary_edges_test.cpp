@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <utility>
@@ -216,7 +215,6 @@ TEST(CollapseBoundaryEdges, EveryAcceptedCollapseIsValidAndSomeAreRefused) {
       ASSERT_EQ(m.nb_tris(), m0.nb_tris() - 2);
     }
   }
-  for (const auto& [s, n] : count) std::printf("status %d: %d\n", static_cast<int>(s), n);
   EXPECT_GT(count[CollapseCheck::kOk], 50);
   EXPECT_GT(count[CollapseCheck::kInverted], 0);
 }
