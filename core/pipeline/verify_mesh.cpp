@@ -285,6 +285,15 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
           throw InvariantError("surface " + std::to_string(tag) +
                                " changed its topology (Euler characteristic or boundary edges)");
       }
+      // Only vertices of the boundary triangles may have left the tets.
+      std::vector<char> on_tris(static_cast<std::size_t>(before.nb_vertices()), 0),
+          used(static_cast<std::size_t>(after.nb_vertices()), 0);
+      for (int v : before.tris) on_tris[v] = 1;
+      for (int v : after.tets)
+        if (v >= 0) used[v] = 1;
+      for (int v : before.tets)
+        if (v >= 0 && v < after.nb_vertices() && !used[v] && !on_tris[v])
+          throw InvariantError("interior vertex " + std::to_string(v) + " is in no tet any more");
     }
   }
   check_new_vertices(before, after);
