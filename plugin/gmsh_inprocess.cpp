@@ -211,6 +211,7 @@ std::string GmshOptimizeResult::to_json() const {
                           {"curve_vertices", result.nb_curve_vertices},
                           {"fixed_vertices", result.nb_fixed_vertices},
                           {"moved", result.nb_boundary_moved},
+                          {"removed", result.nb_boundary_removed},
                           {"hausdorff", result.hausdorff},
                           {"hausdorff_bound", result.hausdorff_tolerance},
                           {"volume_change", result.volume_change},

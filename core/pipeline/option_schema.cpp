@@ -217,6 +217,11 @@ std::vector<OptionSpec> make_schema() {
                      "to raise its star's sum of Q, the minimum kept) and the flips on the "
                      "average at the end (0 = none)",
                      kDim3));
+  v.push_back(number("coarsen_surface", "--coarsen-surface", &O::coarsen_surface, 0, 1,
+                     "free boundary: surface edges shorter than this fraction of the interior "
+                     "spacing near them are collapsed (surface vertices removed, under the "
+                     "Hausdorff and volume bounds) after the first Lloyd (0 = none)",
+                     kDim3));
   // Issue 14 (robust branch): Python only for now; the CLI has --allow-worse (cmd_optimize.cpp).
   v.push_back(boolean("never_worse", "", &O::never_worse,
                       "never worse than the input: a result with a lower Q_min or min angle or a "

@@ -188,6 +188,31 @@ void check_new_vertices(const TetMesh& before, const TetMesh& after) {
   }
 }
 
+// Per surface tag: V - E + F of its triangles and its boundary edges (on one of its triangles),
+// sorted.
+std::map<int, std::pair<long, std::vector<std::array<int, 2>>>> surface_topology(const TetMesh& m) {
+  std::map<int, std::map<std::array<int, 2>, int>> edges;
+  std::map<int, std::set<int>> verts;
+  std::map<int, long> faces;
+  for (int f = 0; f < m.nb_tris(); ++f) {
+    const int s = m.tri_surface[f];
+    ++faces[s];
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.tris[3 * f + k], b = m.tris[3 * f + (k + 1) % 3];
+      ++edges[s][{std::min(a, b), std::max(a, b)}];
+      verts[s].insert(a);
+    }
+  }
+  std::map<int, std::pair<long, std::vector<std::array<int, 2>>>> r;
+  for (const auto& [s, e] : edges) {
+    auto& t = r[s];
+    t.first = static_cast<long>(verts[s].size()) - static_cast<long>(e.size()) + faces[s];
+    for (const auto& [k, n] : e)
+      if (n == 1) t.second.push_back(k);
+  }
+  return r;
+}
+
 }  // namespace
 
 std::vector<std::pair<int, double>> region_volumes(const TetMesh& m) {
@@ -243,8 +268,33 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
       }
       return s;
     };
-    if (per_surface(before) != per_surface(after))
-      throw InvariantError("a surface lost or gained triangles or vertices");
+    if (!options.boundary_collapses) {
+      if (per_surface(before) != per_surface(after))
+        throw InvariantError("a surface lost or gained triangles or vertices");
+    } else {
+      const auto sb = per_surface(before), sa = per_surface(after);
+      const auto tb = surface_topology(before), ta = surface_topology(after);
+      if (sb.size() != sa.size()) throw InvariantError("a surface disappeared or appeared");
+      for (const auto& [tag, e] : sb) {
+        const auto it = sa.find(tag);
+        if (it == sa.end()) throw InvariantError("surface " + std::to_string(tag) + " disappeared");
+        if (!std::includes(e.second.begin(), e.second.end(), it->second.second.begin(),
+                           it->second.second.end()))
+          throw InvariantError("surface " + std::to_string(tag) + " gained vertices");
+        if (tb.at(tag) != ta.at(tag))
+          throw InvariantError("surface " + std::to_string(tag) +
+                               " changed its topology (Euler characteristic or boundary edges)");
+      }
+      // Only vertices of the boundary triangles may have left the tets.
+      std::vector<char> on_tris(static_cast<std::size_t>(before.nb_vertices()), 0),
+          used(static_cast<std::size_t>(after.nb_vertices()), 0);
+      for (int v : before.tris) on_tris[v] = 1;
+      for (int v : after.tets)
+        if (v >= 0) used[v] = 1;
+      for (int v : before.tets)
+        if (v >= 0 && v < after.nb_vertices() && !used[v] && !on_tris[v])
+          throw InvariantError("interior vertex " + std::to_string(v) + " is in no tet any more");
+    }
   }
   check_new_vertices(before, after);
   // Region volumes conserved.
@@ -280,8 +330,26 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
         }
         return count;
       };
-      if (tags_of(before) != tags_of(after))
-        throw InvariantError(group_name(g) + " is no longer bounded by the same surfaces");
+      if (!options.boundary_collapses) {
+        if (tags_of(before) != tags_of(after))
+          throw InvariantError(group_name(g) + " is no longer bounded by the same surfaces");
+        continue;
+      }
+      // Collapses: the group loses as many triangles of each surface as the surface does.
+      auto nb_tris = [](const TetMesh& m) {
+        std::map<int, int> n;
+        for (int f = 0; f < m.nb_tris(); ++f) ++n[m.tri_surface[f]];
+        return n;
+      };
+      const auto cb = tags_of(before), ca = tags_of(after);
+      const auto nb = nb_tris(before), na = nb_tris(after);
+      bool same = cb.size() == ca.size();
+      for (const auto& [tag, n] : cb) {
+        const auto it = ca.find(tag);
+        const int lost = tag < 0 ? 0 : nb.at(tag) - (na.count(tag) ? na.at(tag) : 0);
+        same &= it != ca.end() && n - it->second == lost;
+      }
+      if (!same) throw InvariantError(group_name(g) + " is no longer bounded by the same surfaces");
     }
   }
 }

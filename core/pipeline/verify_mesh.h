@@ -23,8 +23,13 @@ void verify_optimized(const TetMesh& before, const TetMesh& after);
 // region's volume may change by up to `volume_tolerance` relative, and surface edge flips may
 // change the triangles: each surface keeps its number of triangles and its vertices, each volume
 // group is bounded by as many triangles of each surface as before.
+// With boundary_collapses too (the surface coarsening: collapse_boundary_edges), a surface may
+// lose vertices and triangles: each surface's vertices are a subset of its old ones, it keeps its
+// Euler characteristic (V - E + F) and its boundary edges (those on one of its triangles), and
+// each volume group loses as many triangles of each surface as that surface does.
 struct VerifyOptions {
   bool boundary_moves = false;
+  bool boundary_collapses = false;  // with boundary_moves only
   double volume_tolerance = 1e-12;
 };
 void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyOptions& options);

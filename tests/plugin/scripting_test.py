@@ -297,8 +297,10 @@ class CadBoundary(unittest.TestCase):
         # On a CAD model the bound is on top of the input mesh's own chord error.
         self.assertGreaterEqual(fb["hausdorff_bound"], 0.02)
         self.assertLessEqual(fb["hausdorff"], fb["hausdorff_bound"])
+        # The surface coarsening may remove surface nodes (gone from the model); none is new.
         after = nodes(2)
-        self.assertEqual(set(after), set(before))
+        self.assertLessEqual(set(after), set(before))
+        self.assertEqual(len(before) - len(after), fb["removed"])
         for tag, (x, y, z) in after.items():
             r = ((x - 0.1) ** 2 + (y - 0.2) ** 2 + (z - 0.3) ** 2) ** 0.5
             self.assertLessEqual(abs(r - 1), 1e-12, tag)
