@@ -54,8 +54,8 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
     throw std::invalid_argument("boundary_lloyd: relaxation in (0,2), rounds and halvings >= 0");
   if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
   BoundaryLloydStats stats;
-  std::vector<int> hints;
-  CellCentroids cc = voronoi_centroids_3d(mesh, sizing, &hints);
+  Lloyd3CellBuffers buffers;  // kept from round to round
+  CellCentroids cc = voronoi_centroids_3d(mesh, sizing, buffers);
   stats.energy.push_back(cc.energy);
   const double h = mean_edge_length(mesh);
   double omega = o.relaxation;
@@ -108,7 +108,7 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
     const ConstrainedFaces constrained = constrained_faces(mesh);
     restore_delaunay_by_flips(mesh, constrained, false);
     if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
-    CellCentroids next = voronoi_centroids_3d(mesh, sizing, &hints);
+    CellCentroids next = voronoi_centroids_3d(mesh, sizing, buffers);
     if (next.energy > cc.energy) {
       mesh = backup;
       if (o.volume_budget) *o.volume_budget = budget_backup;

@@ -1,6 +1,7 @@
 #include "core/cvt/lloyd3_cells.h"
 
 #include <cmath>
+#include <utility>
 
 #include "core/cvt/voronoi_cell3.h"
 
@@ -29,15 +30,23 @@ void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<in
 
 CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
                                    std::vector<int>* hints) {
+  Lloyd3CellBuffers b;
+  if (hints) b.hints = std::move(*hints);
+  CellCentroids c = voronoi_centroids_3d(mesh, sizing, b);
+  if (hints) *hints = std::move(b.hints);
+  return c;
+}
+
+CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
+                                   Lloyd3CellBuffers& b) {
   CellCentroids c;
   const int nv = mesh.nb_vertices();
   c.centroid.assign(3 * static_cast<std::size_t>(nv), 0);
   c.mass.assign(nv, 0);
-  std::vector<int> local_hints;
-  if (!hints) hints = &local_hints;
-  std::vector<double> H, rho;
-  vertex_density(mesh, sizing, *hints, H, rho);
-  const CellMesh cm = prepare_cell_mesh(mesh, &rho);
+  vertex_density(mesh, sizing, b.hints, b.H, b.rho);
+  const std::vector<double>& rho = b.rho;
+  prepare_cell_mesh(mesh, &rho, false, b.cm);
+  const CellMesh& cm = b.cm;
   // The cells in parallel, summed in vertex order (the result does not depend on the number of
   // threads; the boundary CVT calls this once per round on the whole mesh).
   std::vector<double> energy(nv, 0);

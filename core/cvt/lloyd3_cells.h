@@ -17,8 +17,6 @@ struct CellCentroids {
   std::vector<double> mass;      // #V
   double energy = 0;
 };
-CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
-                                   std::vector<int>* sizing_hints = nullptr);
 
 // What one evaluation gives the moves: the free vertices (vclass dim 3, with tets) in vertex
 // order, their positions z and cell centroids c (3 per free vertex; c = z where the cell is empty
@@ -36,6 +34,14 @@ struct Lloyd3CellBuffers {
   std::vector<int> hints;      // #V: where the sizing field found each vertex last time
   std::vector<double> H, rho;  // #V: size and density at the vertices
 };
+
+CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
+                                   std::vector<int>* sizing_hints = nullptr);
+// The same, with the buffers kept from one call to the next (the constrained CVT calls it once per
+// round: at 1M tets the cell mesh's dual pieces are ~200 MB, allocated and paged in each time
+// otherwise). Identical results.
+CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
+                                   Lloyd3CellBuffers& buffers);
 
 // The cells of every free vertex (and of the fixed ones if compute_energy: the full F), computed
 // in parallel and reduced in vertex order (the result does not depend on the number of threads).
