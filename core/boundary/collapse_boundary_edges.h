@@ -38,8 +38,8 @@ namespace cvtmesh {
 struct BoundaryCollapseOptions {
   double short_fraction = 0.7;  // collapse edges shorter than this x the interior spacing
   double long_fraction = 1.7;   // no new edge longer than this x the interior spacing
-  double q_floor = 0.3;         // new star's min Q >= min(old star's min, q_floor)
-  double angle_floor = 20;      // degrees: the same for the minimum dihedral angle
+  double q_floor = 0.5;         // new star's min Q >= min(old star's min, q_floor)
+  double angle_floor = 30;      // degrees: the same for the minimum dihedral angle
   double tri_floor = 0.5;       // new triangles' Q >= min(old fan's min, tri_floor)
   double flat_angle = 40;       // degrees a new triangle may turn from the one it replaces
   int passes = 10;
