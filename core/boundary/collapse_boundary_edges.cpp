@@ -388,19 +388,27 @@ BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& mode
     std::vector<char> volume_now(dirty.size(), 0);  // v: a collapse of v refused on the budget
     auto clean_star = [&](int x) {
       if (dirty[x]) return false;
-      for (const int* t = star.begin_of(x); t != star.end_of(x); ++t)
+      for (const int* t = star.begin_of(x); t != star.end_of(x); ++t) {
+        const int* tv = &mesh.tets[4 * static_cast<std::size_t>(*t)];
+        if (tv[0] < 0) return false;  // removed by this pass: not clean
         for (int k = 0; k < 4; ++k)
-          if (dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]]) return false;
+          if (dirty[tv[k]]) return false;
+      }
       return true;
     };
     // After the first pass, only the edges whose stars the last pass changed (or left for this
     // one): the others were refused on the same stars (the budget only tightens, up to the
     // rare collapse that adds volume).
+    // The star was built at the start of the pass: a tet an earlier collapse of this pass
+    // removed (tets[4t] = -1) is skipped (its vertices are dirty, so clean_star refuses x anyway).
     auto touched = [&](int x) {
       if (pass == 0 || changed_last[x] || volume_last[x]) return true;
-      for (const int* t = star.begin_of(x); t != star.end_of(x); ++t)
+      for (const int* t = star.begin_of(x); t != star.end_of(x); ++t) {
+        const int* tv = &mesh.tets[4 * static_cast<std::size_t>(*t)];
+        if (tv[0] < 0) continue;
         for (int k = 0; k < 4; ++k)
-          if (changed_last[mesh.tets[4 * static_cast<std::size_t>(*t) + k]]) return true;
+          if (changed_last[tv[k]]) return true;
+      }
       return false;
     };
     long collapsed = 0;
