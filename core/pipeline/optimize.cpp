@@ -701,6 +701,31 @@ OptimizeResult optimize_selection(MeshData& data, const OptimizeOptions& options
   return r;
 }
 
+// One fallback of optimize(): `method` run again on the input with other options; kept() when it
+// ran through and its result is not worse than `before` (worse then says how, error why it
+// failed).
+struct Variant {
+  TetMesh mesh;
+  OptimizeResult result;
+  RestoreNote rn;
+  std::string worse;
+  std::string error;
+  bool kept() const { return error.empty() && worse.empty(); }
+};
+
+Variant try_variant(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
+                    const QualityStats& before, const QualityStats* ref) {
+  Variant v;
+  v.result.method = method;
+  try {
+    v.mesh = run_method3(input, method, o, v.result, ref, &v.rn);
+    v.worse = worse_than(quality_stats(v.mesh, ""), before);
+  } catch (const InvariantError& e) {
+    v.error = e.what();
+  }
+  return v;
+}
+
 }  // namespace
 
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
@@ -780,29 +805,23 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
       r.nb_boundary_removed > 0) {
     OptimizeOptions no = oo;
     no.coarsen_surface = 0;
-    try {
-      RestoreNote rn;
-      OptimizeResult f;
-      f.method = method;
-      TetMesh m = run_method3(input, method, no, f, ref, &rn);
-      const std::string worse = worse_than(quality_stats(m, ""), r.before);
-      if (worse.empty()) {
-        std::vector<std::string> notes = r.notes;
-        notes.push_back(failure + "; '" + method +
-                        "' without the surface coarsening is kept instead");
-        if (!rn.worse.empty()) notes.push_back(restore_succeeded(method, rn, f));
-        notes.insert(notes.end(), f.notes.begin(), f.notes.end());
-        const QualityStats before = r.before;
-        r = f;
-        r.before = before;
-        r.notes = notes;
-        data.tet = std::move(m);
-        failure.clear();
-      } else {
-        failure += "; without the surface coarsening it made the mesh worse (" + worse + ")";
-      }
-    } catch (const InvariantError& e) {
-      failure += std::string("; without the surface coarsening it failed too (") + e.what() + ")";
+    Variant v = try_variant(input, method, no, r.before, ref);
+    if (v.kept()) {
+      std::vector<std::string> notes = r.notes;
+      notes.push_back(failure + "; '" + method +
+                      "' without the surface coarsening is kept instead");
+      if (!v.rn.worse.empty()) notes.push_back(restore_succeeded(method, v.rn, v.result));
+      notes.insert(notes.end(), v.result.notes.begin(), v.result.notes.end());
+      const QualityStats before = r.before;
+      r = v.result;
+      r.before = before;
+      r.notes = notes;
+      data.tet = std::move(v.mesh);
+      failure.clear();
+    } else if (!v.error.empty()) {
+      failure += "; without the surface coarsening it failed too (" + v.error + ")";
+    } else {
+      failure += "; without the surface coarsening it made the mesh worse (" + v.worse + ")";
     }
   }
   // A failure of the free boundary (a bound it broke, a surface it made cross itself: issue 14's
@@ -813,26 +832,20 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     failure.clear();
     OptimizeOptions fo = oo;
     fo.fix_boundary = true;
-    try {
-      RestoreNote rn;
-      OptimizeResult f;
-      f.method = method;
-      TetMesh m = run_method3(input, method, fo, f, ref, &rn);
-      const std::string worse = worse_than(quality_stats(m, ""), r.before);
-      if (!worse.empty()) {
-        failure = "'" + method + "' with the boundary fixed made the mesh worse too (" + worse +
-                  ")" + restore_failed(rn);
-      } else {
-        if (!rn.worse.empty()) r.notes.push_back(restore_succeeded(method, rn, r));
-        r.notes.push_back("'" + method + "' with the boundary fixed is kept instead");
-        data.tet = std::move(m);
-        r.iterations = f.iterations;
-        r.converged = f.converged;
-        r.boundary_free = false;
-        r.nb_boundary_removed = 0;
-      }
-    } catch (const InvariantError& e) {
-      failure = "'" + method + "' with the boundary fixed failed (" + e.what() + ")";
+    Variant v = try_variant(input, method, fo, r.before, ref);
+    if (v.kept()) {
+      if (!v.rn.worse.empty()) r.notes.push_back(restore_succeeded(method, v.rn, r));
+      r.notes.push_back("'" + method + "' with the boundary fixed is kept instead");
+      data.tet = std::move(v.mesh);
+      r.iterations = v.result.iterations;
+      r.converged = v.result.converged;
+      r.boundary_free = false;
+      r.nb_boundary_removed = 0;
+    } else if (!v.error.empty()) {
+      failure = "'" + method + "' with the boundary fixed failed (" + v.error + ")";
+    } else {
+      failure = "'" + method + "' with the boundary fixed made the mesh worse too (" + v.worse +
+                ")" + restore_failed(v.rn);
     }
   }
   if (!failure.empty()) {
@@ -847,29 +860,23 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
         po.polish_flip_below = 0;
         po.polish_repair = false;
       }
-      try {
-        OptimizeResult p;
-        RestoreNote rn;
-        TetMesh m = run_method3(input, "smooth", po, p, ref, &rn);
-        const std::string worse = worse_than(quality_stats(m, ""), r.before);
-        const std::string what = gentle ? "the polish's smoothing" : "the polish";
-        if (worse.empty() && !rn.worse.empty()) r.notes.push_back(restore_succeeded(what, rn, r));
-        if (!worse.empty())
-          r.notes.push_back(what + " on the input is worse too (" + worse + restore_failed(rn) +
-                            ")");
-        if (worse.empty()) {
-          data.tet = std::move(m);
-          polished = true;
-          r.method = "smooth";
-          r.iterations = p.iterations;
-          r.converged = p.converged;
-          r.notes.push_back(gentle ? "the polish's smoothing alone on the input (no flips, no "
-                                     "sliver repair) is kept instead"
-                                   : "the polish alone ('smooth') on the input is kept instead");
-        }
-      } catch (const InvariantError& e) {
-        r.notes.push_back(std::string(gentle ? "the polish's smoothing" : "the polish") +
-                          " on the input failed (" + e.what() + ")");
+      Variant v = try_variant(input, "smooth", po, r.before, ref);
+      const std::string what = gentle ? "the polish's smoothing" : "the polish";
+      if (!v.error.empty()) {
+        r.notes.push_back(what + " on the input failed (" + v.error + ")");
+      } else if (!v.kept()) {
+        r.notes.push_back(what + " on the input is worse too (" + v.worse + restore_failed(v.rn) +
+                          ")");
+      } else {
+        if (!v.rn.worse.empty()) r.notes.push_back(restore_succeeded(what, v.rn, r));
+        data.tet = std::move(v.mesh);
+        polished = true;
+        r.method = "smooth";
+        r.iterations = v.result.iterations;
+        r.converged = v.result.converged;
+        r.notes.push_back(gentle ? "the polish's smoothing alone on the input (no flips, no "
+                                   "sliver repair) is kept instead"
+                                 : "the polish alone ('smooth') on the input is kept instead");
       }
     }
     if (!polished) {
