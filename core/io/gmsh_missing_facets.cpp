@@ -4,29 +4,52 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
 namespace cvtmesh {
 namespace {
 
-using Key = std::array<std::size_t, 3>;  // sorted node tags (third is 0 for an edge)
-
-struct KeyHash {
-  std::size_t operator()(const Key& k) const {
-    std::size_t h = k[0];
-    h = h * 0x9E3779B97F4A7C15ULL ^ k[1];
-    h = h * 0x9E3779B97F4A7C15ULL ^ k[2];
-    return h ^ (h >> 29);
-  }
-};
-
+// A facet of the cells: its node tags as in its first cell (that cell's orientation), how many
+// cells share it, the entities of the first two.
 struct Facet {
   int count = 0;
   int cell_entity[2] = {0, 0};
-  std::array<std::size_t, 3> nodes{};  // as found in the first cell
+  std::array<std::size_t, 3> nodes{};
+};
+
+// Dense ids for node tags (Gmsh's are usually 1..N: a table then, a hash map otherwise).
+class DenseIds {
+ public:
+  explicit DenseIds(std::size_t max_tag, std::size_t nb_refs) {
+    if (max_tag <= 4 * nb_refs + 1024) table_.assign(max_tag + 1, kNone);
+  }
+  std::uint32_t get_or_add(std::size_t tag) {
+    if (!table_.empty()) {
+      std::uint32_t& id = table_[tag];
+      if (id == kNone) id = next_++;
+      return id;
+    }
+    auto [it, fresh] = map_.emplace(tag, next_);
+    if (fresh) ++next_;
+    return it->second;
+  }
+  std::uint32_t find(std::size_t tag) const {
+    if (!table_.empty()) return tag < table_.size() ? table_[tag] : kNone;
+    auto it = map_.find(tag);
+    return it == map_.end() ? kNone : it->second;
+  }
+  std::uint32_t size() const { return next_; }
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+
+ private:
+  std::vector<std::uint32_t> table_;
+  std::unordered_map<std::size_t, std::uint32_t> map_;
+  std::uint32_t next_ = 0;
 };
 
 }  // namespace
@@ -35,39 +58,86 @@ long add_missing_facets(int dim) {
   if (dim != 2 && dim != 3) return 0;
   const int cell_type = dim == 3 ? 4 : 2, facet_type = dim == 3 ? 2 : 1;
   const int npf = dim;  // nodes per facet
+  const std::size_t npe = dim + 1;
   static const int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
   static const int kEdge[3][2] = {{1, 2}, {2, 0}, {0, 1}};
-  auto key_of = [&](const std::size_t* n) {
-    Key k{n[0], n[1], npf == 3 ? n[2] : 0};
-    if (k[0] > k[1]) std::swap(k[0], k[1]);
-    if (npf == 3) {
-      if (k[1] > k[2]) std::swap(k[1], k[2]);
-      if (k[0] > k[1]) std::swap(k[0], k[1]);
-    }
-    return k;
-  };
+  auto local = [&](std::size_t f, int k) { return dim == 3 ? kFace[f][k] : kEdge[f][k]; };
 
-  std::unordered_map<Key, Facet, KeyHash> facets;
-  gmsh::vectorpair cells_ents;
-  gmsh::model::getEntities(cells_ents, dim);
-  for (const auto& [d, ent] : cells_ents) {
-    std::vector<std::size_t> tags, nodes;
-    gmsh::model::mesh::getElementsByType(cell_type, tags, nodes, ent);
-    const std::size_t npe = dim + 1;
-    for (std::size_t e = 0; e < tags.size(); ++e) {
-      const std::size_t* c = &nodes[npe * e];
+  // The cells, entity by entity; a facet is (cell, local face) numbered over all of them.
+  struct Block {
+    int entity = 0;
+    std::vector<std::size_t> nodes;
+  };
+  std::vector<Block> blocks;
+  std::vector<std::size_t> first_cell;  // per block, its first cell's global number
+  std::size_t nb_cells = 0, max_node = 0;
+  {
+    gmsh::vectorpair cells_ents;
+    gmsh::model::getEntities(cells_ents, dim);
+    for (const auto& [d, ent] : cells_ents) {
+      Block b;
+      b.entity = ent;
+      std::vector<std::size_t> tags;
+      gmsh::model::mesh::getElementsByType(cell_type, tags, b.nodes, ent);
+      if (tags.empty()) continue;
+      for (std::size_t n : b.nodes) max_node = std::max(max_node, n);
+      first_cell.push_back(nb_cells);
+      nb_cells += tags.size();
+      blocks.push_back(std::move(b));
+    }
+  }
+  if (nb_cells == 0) return 0;
+  auto cell_nodes = [&](std::size_t block, std::size_t cell) {
+    return &blocks[block].nodes[npe * (cell - first_cell[block])];
+  };
+  // The facets sorted by their sorted dense node ids, bucketed by the smallest (a counting sort),
+  // each bucket sorted by the other two and the facet's number: equal facets are adjacent, the
+  // first cell's first.
+  DenseIds ids(max_node, nb_cells * npe);
+  struct Rec {
+    std::uint32_t b, c;   // the larger dense ids (c = 0 for an edge)
+    std::uint32_t facet;  // cell * npe + local face
+  };
+  if (nb_cells * npe >= DenseIds::kNone)
+    throw std::length_error("add_missing_facets: more than 2^32 facets");
+  auto block_of = [&](std::size_t cell) {
+    return static_cast<std::size_t>(std::upper_bound(first_cell.begin(), first_cell.end(), cell) -
+                                    first_cell.begin() - 1);
+  };
+  std::vector<std::uint32_t> smallest(nb_cells * npe);
+  std::vector<Rec> recs(nb_cells * npe);
+  for (std::size_t bk = 0; bk < blocks.size(); ++bk) {
+    const std::size_t n = blocks[bk].nodes.size() / npe;
+    for (std::size_t e = 0; e < n; ++e) {
+      const std::size_t* c = &blocks[bk].nodes[npe * e];
+      const std::size_t cell = first_cell[bk] + e;
       for (std::size_t f = 0; f < npe; ++f) {
-        std::size_t n[3] = {0, 0, 0};
-        for (int k = 0; k < npf; ++k) n[k] = dim == 3 ? c[kFace[f][k]] : c[kEdge[f][k]];
-        Facet& fc = facets[key_of(n)];
-        if (fc.count < 2) fc.cell_entity[fc.count] = ent;
-        if (fc.count == 0) fc.nodes = {n[0], n[1], n[2]};
-        ++fc.count;
+        std::uint32_t k[3] = {ids.get_or_add(c[local(f, 0)]), ids.get_or_add(c[local(f, 1)]),
+                              npf == 3 ? ids.get_or_add(c[local(f, 2)]) : 0};
+        std::sort(k, k + npf);
+        smallest[cell * npe + f] = k[0];
+        recs[cell * npe + f] = {k[1], npf == 3 ? k[2] : 0,
+                                static_cast<std::uint32_t>(cell * npe + f)};
       }
     }
   }
-  if (facets.empty()) return 0;
-  // Facets that are elements already; the largest element tag.
+  std::vector<std::size_t> start(ids.size() + 1, 0);
+  for (std::uint32_t a : smallest) ++start[a + 1];
+  for (std::size_t i = 0; i < ids.size(); ++i) start[i + 1] += start[i];
+  std::vector<Rec> sorted(recs.size());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < recs.size(); ++i) sorted[fill[smallest[i]]++] = recs[i];
+  }
+  recs.clear();
+  recs.shrink_to_fit();
+  auto less = [](const Rec& x, const Rec& y) {
+    return x.b != y.b ? x.b < y.b : x.c != y.c ? x.c < y.c : x.facet < y.facet;
+  };
+  for (std::size_t a = 0; a < ids.size(); ++a)
+    std::sort(sorted.begin() + start[a], sorted.begin() + start[a + 1], less);
+  // Facets that are elements already (their first record marked); the largest element tag.
+  std::vector<char> present(sorted.size(), 0);
   std::size_t max_tag = 0;
   {
     std::vector<int> types;
@@ -77,11 +147,44 @@ long add_missing_facets(int dim) {
       for (std::size_t t : etags[k]) max_tag = std::max(max_tag, t);
       if (types[k] != facet_type) continue;
       for (std::size_t e = 0; e < etags[k].size(); ++e) {
-        auto it = facets.find(key_of(&enodes[k][npf * e]));
-        if (it != facets.end()) it->second.count = -1;  // present
+        std::uint32_t key[3] = {0, 0, 0};
+        bool known = true;
+        for (int j = 0; j < npf; ++j) {
+          key[j] = ids.find(enodes[k][npf * e + j]);
+          known &= key[j] != DenseIds::kNone;
+        }
+        if (!known) continue;
+        std::sort(key, key + npf);
+        const Rec probe{key[1], npf == 3 ? key[2] : 0, 0};
+        auto first = sorted.begin() + start[key[0]], last = sorted.begin() + start[key[0] + 1];
+        auto it = std::lower_bound(first, last, probe, less);
+        if (it != last && it->b == probe.b && it->c == probe.c) present[it - sorted.begin()] = 1;
       }
     }
   }
+  // The facets on the boundary (one cell) or between two entities, not elements yet.
+  std::vector<Facet> facets;
+  for (std::size_t a = 0; a < ids.size(); ++a) {
+    for (std::size_t i = start[a]; i < start[a + 1];) {
+      std::size_t j = i + 1;
+      while (j < start[a + 1] && sorted[j].b == sorted[i].b && sorted[j].c == sorted[i].c) ++j;
+      if (!present[i]) {
+        Facet fc;
+        fc.count = static_cast<int>(j - i);
+        for (std::size_t k = 0; k < 2 && i + k < j; ++k)
+          fc.cell_entity[k] = blocks[block_of(sorted[i + k].facet / npe)].entity;
+        const std::size_t cell = sorted[i].facet / npe, f = sorted[i].facet % npe;
+        const std::size_t* c = cell_nodes(block_of(cell), cell);
+        for (int k = 0; k < npf; ++k) fc.nodes[k] = c[local(f, k)];
+        const bool boundary = fc.count == 1;
+        const bool interface = fc.count == 2 && fc.cell_entity[0] != fc.cell_entity[1];
+        if (boundary || interface) facets.push_back(fc);
+      }
+      i = j;
+    }
+  }
+  sorted.clear();
+  sorted.shrink_to_fit();
   // Node classification on the lower-dimensional entities.
   std::unordered_map<std::size_t, std::pair<int, int>> where;
   for (int d = 0; d < dim; ++d) {
@@ -125,10 +228,8 @@ long add_missing_facets(int dim) {
   std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> added;
   std::vector<std::size_t> unplaced;  // nodes of facets without any classification to go by
   long nb = 0;
-  for (const auto& [key, fc] : facets) {
-    const bool boundary = fc.count == 1;
-    const bool interface = fc.count == 2 && fc.cell_entity[0] != fc.cell_entity[1];
-    if (!boundary && !interface) continue;
+  for (const Facet& fc : facets) {
+    const bool interface = fc.count == 2;
     int entity = 0;
     for (int k = 0; k < npf && !entity; ++k) {
       auto it = where.find(fc.nodes[k]);
