@@ -102,7 +102,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
     r.lloyd_energy.push_back(s.energy);
     if (!o.progress) return;
-    OptimizeProgress p = lloyd_progress(s, "lloyd", quality_stats(mesh, ""));
+    OptimizeProgress p = lloyd_progress(s, "lloyd", quality_summary(mesh, ""));
     p.max_iterations = o.max_iterations;
     p.tolerance = o.tolerance;
     o.progress(p);
@@ -121,7 +121,7 @@ void run_swap3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   const SwapStats st = swap_slivers(mesh, so);
   r.iterations += st.passes;
   r.converged = true;
-  report(o, "swap", st.passes, 0, 0, quality_stats(mesh, ""));
+  report(o, "swap", st.passes, 0, 0, quality_summary(mesh, ""));
 }
 
 // The paper's CVDT + SWAP.
@@ -186,7 +186,7 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
     // (which makes small tets) kept a Q 0.05 tet at ~100k tets (Q_min 0.050 instead of 0.512).
     report_start(o, "repair");
     repair_slivers(mesh, RepairOptions{});
-    if (o.progress) report(o, "repair", 1, 0, 0, quality_stats(mesh, ""));
+    if (o.progress) report(o, "repair", 1, 0, 0, quality_summary(mesh, ""));
   }
 }
 
@@ -328,7 +328,7 @@ void raise_mean_quality(TetMesh& mesh, const OptimizeOptions& o, const BoundaryM
   for (int pass = 0; pass < o.mean_passes; ++pass) {
     const MeanQualityStats st = smooth_mean_quality(mesh, b, mo);
     flip();
-    if (o.progress) report(o, "mean", pass + 1, 0, 0, quality_stats(mesh, ""));
+    if (o.progress) report(o, "mean", pass + 1, 0, 0, quality_summary(mesh, ""));
     if (st.nb_moved == 0) break;
   }
 }
@@ -405,7 +405,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
     for (std::size_t i = 0; i + 1 < st.energy.size(); ++i)
       report(o, "bnd-cvt", static_cast<int>(i), 0, st.energy[i], QualityStats{});
     report(o, "bnd-cvt", st.rounds, 0, st.energy.empty() ? 0 : st.energy.back(),
-           quality_stats(mesh, ""));
+           quality_summary(mesh, ""));
     OptimizeOptions again = o;
     again.max_iterations = std::min(o.max_iterations, 30);
     OptimizeResult r2;

@@ -100,6 +100,70 @@ QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
   return quality_stats_from_values(m[0], m[1], m[2], m[3], 3, label);
 }
 
+QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
+  const int nt = mesh.nb_tets();
+  constexpr int kBlock = 4096;
+  const int nb = (nt + kBlock - 1) / kBlock;
+  struct Part {
+    double sum = 0, lo = std::numeric_limits<double>::infinity(),
+           hi = -std::numeric_limits<double>::infinity();
+    long n = 0, bin[4] = {0, 0, 0, 0}, inverted = 0, bad = 0, good = 0;
+  };
+  std::vector<Part> parts(static_cast<std::size_t>(nb));
+#pragma omp parallel for schedule(static, 4)
+  for (int b = 0; b < nb; ++b) {
+    Part& p = parts[b];
+    const int end = std::min(nt, (b + 1) * kBlock);
+    for (int t = b * kBlock; t < end; ++t) {
+      const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      if (v[0] < 0) continue;
+      const double q = tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                   mesh.point(v[3]), Measure::kQ);
+      ++p.n;
+      p.sum += q;
+      p.lo = std::min(p.lo, q);
+      p.hi = std::max(p.hi, q);
+      if (q > 0.7)
+        ++p.bin[0];
+      else if (q > 0.5)
+        ++p.bin[1];
+      else if (q > 0.3)
+        ++p.bin[2];
+      else if (q > 0)
+        ++p.bin[3];
+      else
+        ++p.inverted;
+      if (q < 0.3) ++p.bad;
+      if (q > 0.5) ++p.good;
+    }
+  }
+  QualityStats s;
+  s.label = label;
+  s.dim = 3;
+  Part all;
+  for (const Part& p : parts) {
+    all.n += p.n;
+    all.sum += p.sum;
+    all.lo = std::min(all.lo, p.lo);
+    all.hi = std::max(all.hi, p.hi);
+    for (int k = 0; k < 4; ++k) all.bin[k] += p.bin[k];
+    all.inverted += p.inverted;
+    all.bad += p.bad;
+    all.good += p.good;
+  }
+  s.nb_elements = all.n;
+  if (all.n == 0) return s;
+  const double n = static_cast<double>(all.n);
+  s.q_min = all.lo;
+  s.q_max = all.hi;
+  s.q_avg = all.sum / n;
+  for (int k = 0; k < 4; ++k) s.bin[k] = all.bin[k];
+  s.nb_inverted = all.inverted;
+  s.bad_pct = 100.0 * static_cast<double>(all.bad) / n;
+  s.good_pct = 100.0 * static_cast<double>(all.good) / n;
+  return s;
+}
+
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {
   return quality_stats_from_values(element_qualities(mesh, Measure::kQ),
                                    element_qualities(mesh, Measure::kRadiusRatio),

@@ -40,6 +40,12 @@ std::vector<double> element_qualities(const TriMesh2& mesh, Measure m);
 
 QualityStats quality_stats(const TetMesh& mesh, const std::string& label);
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label);
+// The rows of quality_stats that come from Q alone (counts, bins, Q min / max / average, bad and
+// good percentages; the angles and the radius ratio left 0), in one parallel pass without the
+// per-element arrays: what a progress report shows after every iteration. Deterministic for any
+// number of threads (the average summed in fixed blocks, in order; it may differ from
+// quality_stats's in the last bits).
+QualityStats quality_summary(const TetMesh& mesh, const std::string& label);
 // Statistics from precomputed per-element values (Q, radius ratio, min angle, max angle).
 QualityStats quality_stats_from_values(const std::vector<double>& q, const std::vector<double>& rr,
                                        const std::vector<double>& min_angle,
