@@ -1,6 +1,7 @@
 #include "core/swap/swap_slivers.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -139,13 +140,112 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   VertexTimeSteps dt_steps;
   if (options.dt_guard.on) dt_steps = vertex_time_steps(mesh);
   VertexStepChange dt_change;
-  auto nodal_change = [&](const SwapPlan& plan) -> const VertexStepChange& {
-    dt_change.clear();
-    for (int o : plan.old_tets)
-      dt_change.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(o)], -1);
-    for (const auto& t : plan.new_tets) dt_change.add(mesh, t.data(), +1);
-    return dt_change;
+  auto nodal_change = [&](const SwapPlan& plan,
+                          VertexStepChange& change) -> const VertexStepChange& {
+    change.clear();
+    for (int o : plan.old_tets) change.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(o)], -1);
+    for (const auto& t : plan.new_tets) change.add(mesh, t.data(), +1);
+    return change;
   };
+  // One tet's evaluation: every operation on it planned, the best the criterion accepts, and the
+  // refusal marks to set (bit e: the removal of edge e, 6 + f: the 2-3 flip of face f, on every
+  // tet of the operation's cavity). Reads the mesh, q and refused only.
+  struct Evaluation {
+    bool valid = false;
+    bool have_best = false;
+    double best_gain = 0;
+    SwapPlan best;
+    std::vector<std::pair<int, std::uint16_t>> marks;
+    // With the time-step guard: the vertices whose nodal sums it read, and its buffer.
+    std::vector<int> reads;
+    VertexStepChange change;
+  };
+  auto evaluate = [&](int t, Evaluation& ev) {
+    ev.have_best = false;
+    ev.best_gain = 0;
+    ev.marks.clear();
+    ev.reads.clear();
+    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    // Evaluates a valid plan; true if the criterion accepts it (it becomes best if better).
+    auto consider = [&](SwapPlan&& plan) {
+      if (plan.status != SwapStatus::kOk) return false;
+      if (!plan.quality_known || plan.measure != measure) {
+        plan.old_min = std::numeric_limits<double>::infinity();
+        for (int o : plan.old_tets) plan.old_min = std::min(plan.old_min, q[o]);
+        plan.new_min = min_quality(mesh, plan.new_tets, measure);
+        plan.quality_known = true;
+        plan.measure = measure;
+      }
+      double gain = 0;
+      if (options.sum_criterion) {
+        if (plan.new_min < plan.old_min) return false;
+        double old_sum = 0, new_sum = 0;
+        for (int o : plan.old_tets) old_sum += q[o];
+        for (const auto& n : plan.new_tets)
+          new_sum += tet_quality(mesh.point(n[0]), mesh.point(n[1]), mesh.point(n[2]),
+                                 mesh.point(n[3]), measure);
+        // Against the mesh's mean: the average rises when the sum gains more than the mean
+        // times the change in the number of tets.
+        gain = new_sum - old_sum -
+               sum_reference * (static_cast<double>(plan.new_tets.size()) -
+                                static_cast<double>(plan.old_tets.size()));
+        if (!(gain > options.sum_gain)) return false;
+      } else if (!accept_swap(plan.old_min, plan.new_min, criterion)) {
+        return false;
+      }
+      if (options.use_guard) {
+        const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
+        const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
+        if (guard_new < std::min(guard_old, options.guard_floor)) return false;
+      }
+      if (options.dt_guard.on &&
+          !time_step_allows(options.dt_guard, min_quality(mesh, plan.old_tets, Measure::kTimeStep),
+                            min_quality(mesh, plan.new_tets, Measure::kTimeStep)))
+        return false;
+      if (options.dt_guard.on) {
+        for (int o : plan.old_tets)
+          ev.reads.insert(ev.reads.end(), &mesh.tets[4 * static_cast<std::size_t>(o)],
+                          &mesh.tets[4 * static_cast<std::size_t>(o)] + 4);
+        if (!nodal_change(plan, ev.change).allows(options.dt_guard, dt_steps)) return false;
+      }
+      if (options.sum_criterion ? !ev.have_best || gain > ev.best_gain
+                                : !ev.have_best || plan.new_min > ev.best.new_min) {
+        ev.best = std::move(plan);
+        ev.best_gain = gain;
+        ev.have_best = true;
+      }
+      return true;
+    };
+    if (options.remove_edges)
+      for (int e = 0; e < 6; ++e) {
+        if (refused[t] >> e & 1) continue;
+        const int a = tv[kTetEdge[e][0]], b = tv[kTetEdge[e][1]];
+        if (on_constraint[a] && on_constraint[b] && constrained_edges.count(edge_key(a, b)))
+          continue;
+        const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
+        if (!ring.closed) continue;
+        if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
+          for (int r : ring.tets) {
+            const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], a, b);
+            if (le >= 0) ev.marks.push_back({r, static_cast<std::uint16_t>(1u << le)});
+          }
+      }
+    if (options.flip23)
+      for (int f = 0; f < 4; ++f) {
+        if (refused[t] >> (6 + f) & 1) continue;
+        const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
+        if (behind < 0) continue;
+        if (!consider(plan_flip23(mesh, constrained, t, f))) {
+          ev.marks.push_back({t, static_cast<std::uint16_t>(1u << (6 + f))});
+          ev.marks.push_back({behind / 4, static_cast<std::uint16_t>(1u << (6 + behind % 4))});
+        }
+      }
+  };
+  std::vector<Evaluation> evals;
+  Evaluation serial;
+  // Per vertex, the stamp of the last chunk in which a tet containing it was removed or created.
+  std::vector<int> vmod(mesh.nb_vertices(), 0);
+  int stamp = 0;
   for (int pass = 0; pass < options.max_passes; ++pass) {
     order.clear();
     for (int t = 0; t < mesh.nb_tets(); ++t) {
@@ -160,115 +260,87 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
               [](const Entry& a, const Entry& b) { return a.q != b.q ? a.q < b.q : a.t < b.t; });
     ++stats.passes;
     long nb_done = 0;
-    for (const Entry& en : order) {
-      const int t = en.t;
-      if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0 || version[t] != en.version) continue;
-      ++stats.nb_tried;
-      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
-      SwapPlan best;
-      bool have_best = false;
-      double best_gain = 0;
-      // Evaluates a valid plan; true if the criterion accepts it (it becomes best if better).
-      auto consider = [&](SwapPlan&& plan) {
-        if (plan.status != SwapStatus::kOk) return false;
-        if (!plan.quality_known || plan.measure != measure) {
-          plan.old_min = std::numeric_limits<double>::infinity();
-          for (int o : plan.old_tets) plan.old_min = std::min(plan.old_min, q[o]);
-          plan.new_min = min_quality(mesh, plan.new_tets, measure);
-          plan.quality_known = true;
-          plan.measure = measure;
-        }
-        double gain = 0;
-        if (options.sum_criterion) {
-          if (plan.new_min < plan.old_min) return false;
-          double old_sum = 0, new_sum = 0;
-          for (int o : plan.old_tets) old_sum += q[o];
-          for (const auto& n : plan.new_tets)
-            new_sum += tet_quality(mesh.point(n[0]), mesh.point(n[1]), mesh.point(n[2]),
-                                   mesh.point(n[3]), measure);
-          // Against the mesh's mean: the average rises when the sum gains more than the mean
-          // times the change in the number of tets.
-          gain = new_sum - old_sum -
-                 sum_reference * (static_cast<double>(plan.new_tets.size()) -
-                                  static_cast<double>(plan.old_tets.size()));
-          if (!(gain > options.sum_gain)) return false;
-        } else if (!accept_swap(plan.old_min, plan.new_min, criterion)) {
-          return false;
-        }
-        if (options.use_guard) {
-          const double guard_old = min_quality(mesh, plan.old_tets, options.guard_measure);
-          const double guard_new = min_quality(mesh, plan.new_tets, options.guard_measure);
-          if (guard_new < std::min(guard_old, options.guard_floor)) return false;
-        }
-        if (options.dt_guard.on &&
-            !time_step_allows(options.dt_guard,
-                              min_quality(mesh, plan.old_tets, Measure::kTimeStep),
-                              min_quality(mesh, plan.new_tets, Measure::kTimeStep)))
-          return false;
-        if (options.dt_guard.on && !nodal_change(plan).allows(options.dt_guard, dt_steps))
-          return false;
-        if (options.sum_criterion ? !have_best || gain > best_gain
-                                  : !have_best || plan.new_min > best.new_min) {
-          best = std::move(plan);
-          best_gain = gain;
-          have_best = true;
-        }
-        return true;
-      };
-      if (options.remove_edges)
-        for (int e = 0; e < 6; ++e) {
-          if (refused[t] >> e & 1) continue;
-          const int a = tv[kTetEdge[e][0]], b = tv[kTetEdge[e][1]];
-          if (on_constraint[a] && on_constraint[b] && constrained_edges.count(edge_key(a, b)))
+    // The entries in chunks: each chunk's tets are evaluated in parallel against the mesh as it
+    // is at the chunk's start, then taken in order, serially: an evaluation is used only if no
+    // tet containing one of its tet's vertices was removed or created since (every tet it read,
+    // the edge rings and the face neighbours, contains two or three of them, and the refusal
+    // marks it skipped were cleared only around new tets): it is then exactly what the serial
+    // evaluation would give at that point; otherwise the tet is evaluated again there. Same
+    // result as one serial loop, for any number of threads. With the time-step guard the nodal
+    // sums it read, at the vertices of every cavity it tried, must not have changed either.
+    const std::size_t chunk = 4096;
+    for (std::size_t c0 = 0; c0 < order.size(); c0 += chunk) {
+      const std::size_t c1 = std::min(order.size(), c0 + chunk);
+      ++stamp;
+      const int chunk_stamp = stamp;
+      {
+        evals.resize(c1 - c0);
+#pragma omp parallel for schedule(dynamic, 64)
+        for (std::ptrdiff_t i = static_cast<std::ptrdiff_t>(c0);
+             i < static_cast<std::ptrdiff_t>(c1); ++i) {
+          Evaluation& ev = evals[i - c0];
+          ev.valid = false;
+          const Entry& en = order[i];
+          if (mesh.tets[4 * static_cast<std::size_t>(en.t)] < 0 || version[en.t] != en.version)
             continue;
-          const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
-          if (!ring.closed) continue;
-          if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
-            for (int r : ring.tets) {
-              const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], a, b);
-              if (le >= 0) refused[r] |= static_cast<std::uint16_t>(1u << le);
-            }
-        }
-      if (options.flip23)
-        for (int f = 0; f < 4; ++f) {
-          if (refused[t] >> (6 + f) & 1) continue;
-          const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
-          if (behind < 0) continue;
-          if (!consider(plan_flip23(mesh, constrained, t, f))) {
-            refused[t] |= static_cast<std::uint16_t>(1u << (6 + f));
-            refused[behind / 4] |= static_cast<std::uint16_t>(1u << (6 + behind % 4));
+          try {
+            evaluate(en.t, ev);
+            ev.valid = true;
+          } catch (...) {
+            // Evaluated again in order below, where the error is thrown as in the serial loop.
           }
         }
-      if (!have_best) continue;
+      }
+      for (std::size_t i = c0; i < c1; ++i) {
+        const Entry& en = order[i];
+        const int t = en.t;
+        if (mesh.tets[4 * static_cast<std::size_t>(t)] < 0 || version[t] != en.version) continue;
+        const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+        Evaluation* ev = &evals[i - c0];
+        bool stale = !ev->valid || std::max(std::max(vmod[tv[0]], vmod[tv[1]]),
+                                            std::max(vmod[tv[2]], vmod[tv[3]])) >= chunk_stamp;
+        for (std::size_t k = 0; k < ev->reads.size() && !stale; ++k)
+          stale = vmod[ev->reads[k]] >= chunk_stamp;
+        if (stale) {
+          ev = &serial;
+          evaluate(t, serial);
+        }
+        ++stats.nb_tried;
+        for (const auto& [slot, bits] : ev->marks) refused[slot] |= bits;
+        if (!ev->have_best) continue;
+        SwapPlan& best = ev->best;
 
-      const std::size_t nb_old = best.old_tets.size(), nb_new = best.new_tets.size();
-      for (int o : best.old_tets) {
-        ++version[o];
-        touch(o, pass + 1);
-      }
-      if (options.dt_guard.on) nodal_change(best).apply(dt_steps);
-      apply_swap(mesh, best, &free_slots);
-      if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
-        q.resize(static_cast<std::size_t>(mesh.nb_tets()));
-        version.resize(q.size(), 0);
-        refused.resize(q.size(), 0);
-      }
-      for (int id : best.new_ids) refused[id] = 0;
-      for (int id : best.new_ids) clear_around(id);
-      for (int id : best.new_ids) {
-        ++version[id];
-        touch(id, pass + 1);
-        q[id] = quality_of(mesh, id, measure);
-      }
-      ++nb_done;
-      if (nb_old == 2 && nb_new == 3) {
-        ++stats.nb_flip23;
-      } else {
-        ++stats.nb_by_ring[nb_old];
-        if (nb_old == 3)
-          ++stats.nb_flip32;
-        else
-          ++stats.nb_edge_removals;
+        const std::size_t nb_old = best.old_tets.size(), nb_new = best.new_tets.size();
+        // The new tets' vertices are the old ones'.
+        for (int o : best.old_tets) {
+          ++version[o];
+          touch(o, pass + 1);
+          for (int k = 0; k < 4; ++k) vmod[mesh.tets[4 * static_cast<std::size_t>(o) + k]] = stamp;
+        }
+        if (options.dt_guard.on) nodal_change(best, dt_change).apply(dt_steps);
+        apply_swap(mesh, best, &free_slots);
+        if (q.size() < static_cast<std::size_t>(mesh.nb_tets())) {
+          q.resize(static_cast<std::size_t>(mesh.nb_tets()));
+          version.resize(q.size(), 0);
+          refused.resize(q.size(), 0);
+        }
+        for (int id : best.new_ids) refused[id] = 0;
+        for (int id : best.new_ids) clear_around(id);
+        for (int id : best.new_ids) {
+          ++version[id];
+          touch(id, pass + 1);
+          q[id] = quality_of(mesh, id, measure);
+        }
+        ++nb_done;
+        if (nb_old == 2 && nb_new == 3) {
+          ++stats.nb_flip23;
+        } else {
+          ++stats.nb_by_ring[nb_old];
+          if (nb_old == 3)
+            ++stats.nb_flip32;
+          else
+            ++stats.nb_edge_removals;
+        }
       }
     }
     if (nb_done == 0) break;
