@@ -7,6 +7,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <cmath>
@@ -131,21 +132,38 @@ bool TriangleSetDistance::any_within(const double* p, double r) const {
   if (impl_->triangles.empty() || !(r >= 0)) return false;
   if (std::isinf(r)) return true;
   const K::Point_3 q(p[0], p[1], p[2]);
-  // The triangle that answered this thread's last query on this set first: the checks ask about
-  // the samples of a vertex's fan one after the other, nearly always within r of one input
-  // triangle (the femur's boundary moves: fan_within_tolerance was 7 % of a run, most of it in the
-  // traversal). The answer is the same (the same test on a triangle the traversal may reach: it
-  // reaches every triangle within r); only which thread asked before changes the work.
-  thread_local std::uint64_t last_set = 0;
-  thread_local std::size_t last = 0;
+  // The triangles that answered this thread's last queries on this set first: the checks ask
+  // about the samples of a vertex's fan one after the other, nearly always within r of one of a
+  // few input triangles (the femur's boundary moves: fan_within_tolerance was 7 % of a run, most
+  // of it in the traversal). The answer is the same (the same test on triangles the traversal
+  // may reach: it reaches every triangle within r); only which thread asked before changes the
+  // work.
+  constexpr int kRecent = 8;
+  thread_local std::uint64_t recent_set = 0;
+  thread_local std::array<std::size_t, kRecent> recent{};
+  thread_local int nb_recent = 0, next = 0;
   const Triangles& all = impl_->triangles;
-  if (last_set == impl_->serial && last < all.size() && triangle_within(all[last], q, r))
-    return true;
+  if (recent_set != impl_->serial) {
+    recent_set = impl_->serial;
+    nb_recent = next = 0;
+  }
+  for (int i = 0; i < nb_recent; ++i) {
+    const K::Triangle_3& t = all[recent[i]];
+    // Its bounding box first (cheaper than the projection; most of the recent ones are far).
+    bool near = true;
+    for (int k = 0; k < 3 && near; ++k) {
+      const double lo = std::min({t[0][k], t[1][k], t[2][k]}),
+                   hi = std::max({t[0][k], t[1][k], t[2][k]});
+      near = q[k] >= lo - r && q[k] <= hi + r;
+    }
+    if (near && triangle_within(t, q, r)) return true;
+  }
   WithinTraversal w{q, r};
   impl_->tree.traversal(w.p, w);
   if (!w.found) return false;
-  last_set = impl_->serial;
-  last = static_cast<std::size_t>(w.found - all.data());
+  recent[next] = static_cast<std::size_t>(w.found - all.data());
+  next = (next + 1) % kRecent;
+  nb_recent = std::min(nb_recent + 1, kRecent);
   return true;
 }
 
