@@ -328,6 +328,21 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
 void apply_boundary_collapse(TetMesh& m, BoundaryModel& model, const CollapsePlan& p,
                              VolumeBudget* budget) {
   if (budget && !p.delta.empty()) budget->commit(p.delta);
+  // The adjacency, if built, is kept: a dead tet (v, w, a, b) glued its neighbours across
+  // (w, a, b) and (v, a, b), which become the same face once v is w (the link condition makes
+  // the result a manifold, so they are neighbours; one of them may be the boundary).
+  if (m.adj.size() == m.tets.size())
+    for (int t : p.kill_tets) {
+      const std::size_t t4 = 4 * static_cast<std::size_t>(t);
+      int across_v = -1, across_w = -1;  // the neighbours opposite v and opposite w (4t'+f')
+      for (int k = 0; k < 4; ++k) {
+        if (m.tets[t4 + k] == p.v) across_v = m.adj[t4 + k];
+        if (m.tets[t4 + k] == p.w) across_w = m.adj[t4 + k];
+      }
+      if (across_v >= 0) m.adj[across_v] = across_w;
+      if (across_w >= 0) m.adj[across_w] = across_v;
+      for (int k = 0; k < 4; ++k) m.adj[t4 + k] = -1;
+    }
   for (int t : p.kill_tets) m.tets[4 * static_cast<std::size_t>(t)] = -1;
   for (int t : p.move_tets)
     for (int k = 0; k < 4; ++k)
@@ -432,12 +447,13 @@ BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& mode
     changed_last.swap(dirty);
     volume_last.swap(volume_now);
     compact_boundary_triangles(mesh);
-    mesh.adj.clear();
-    compact_tets(mesh);
-    build_adjacency(mesh);
+    // The dead tets stay until the end (the stars, the spacing and the next pass skip them;
+    // apply_boundary_collapse kept the adjacency): compacting and rebuilding the adjacency of
+    // the whole mesh in each pass took 0.37 s of the femur's 0.9 s coarsening. Compaction keeps
+    // the live tets' order, so the stars list them in the same order either way.
     changed = true;
   }
-  if (changed && mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
+  if (changed) compact_tets(mesh);  // remaps the adjacency
   return stats;
 }
 

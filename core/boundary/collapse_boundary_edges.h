@@ -74,8 +74,10 @@ CollapseCheck plan_boundary_collapse(const TetMesh& mesh, const BoundaryModel& m
                                      const BoundaryCollapseOptions& options, CollapsePlan& plan);
 
 // Kills the tets and triangles on (v, w) (tets[4t] = -1, tris[3f] = -1), writes w for v in the
-// others, marks v kFixed in the model, charges the budget. The adjacency, the stars and the fans
-// are stale afterwards; the dead triangles must be dropped (compact_boundary_triangles).
+// others, marks v kFixed in the model, charges the budget. The adjacency, if built, stays valid
+// (the dead tets' neighbours glued to each other, their own slots -1); the stars and the fans are
+// stale afterwards; the dead triangles must be dropped (compact_boundary_triangles) and the dead
+// tets compacted (compact_tets) before the mesh is valid again.
 void apply_boundary_collapse(TetMesh& mesh, BoundaryModel& model, const CollapsePlan& plan,
                              VolumeBudget* budget);
 
@@ -94,7 +96,7 @@ struct BoundaryCollapseStats {
 // Passes over the candidate edges (v surface vertex, |vw| < short_fraction x spacing(v)),
 // shortest relative to the spacing first (ties by vertex ids: deterministic), each pass on
 // fresh stars, a vertex touched by a collapse left for the next pass; until a pass collapses
-// none. On exit the dead tets and triangles are compacted and the adjacency rebuilt.
+// none. On exit the dead tets and triangles are compacted (the adjacency kept valid).
 BoundaryCollapseStats collapse_boundary_edges(TetMesh& mesh, BoundaryModel& model,
                                               const BoundaryCollapseOptions& options = {});
 

@@ -333,8 +333,33 @@ void raise_mean_quality(TetMesh& mesh, const OptimizeOptions& o, const BoundaryM
   }
 }
 
-// The constrained CVT's rounds after a surface coarsening (at most).
-constexpr int kCoarsenedLloydRounds = 5;
+// The constrained CVT's rounds after a surface coarsening (at most). 3: each round costs a
+// Voronoi-cell evaluation of the whole mesh and a Hausdorff-checked move of every boundary vertex
+// (the femur's 5 rounds were 1/6 of its free-boundary run), and the later Lloyd, polish and
+// average-quality passes make up for the last ones: femur avg Q 0.8526, Q_min 0.500, 30.0 degrees
+// with 3 (0.8523, 0.461, 27.7 with 5; 2 rounds: Q_min 0.306, below issue 13's 0.35);
+// cube_sphere at h x 1, x 0.995, x 0.996: Q_min 0.533 / 0.503 / 0.508, min dihedral 31.4 / 30.2 /
+// 30.4 degrees (0.505 / 0.510 / 0.507, 30.5 / 30.6 / 30.2 with 5).
+constexpr int kCoarsenedLloydRounds = 3;
+
+// The Lloyd iterations re-converging the interior after a coarsening and the constrained CVT (at
+// most; 30 without a coarsening, not measured). Each costs a Voronoi-cell evaluation with the
+// clipped boundary cells (femur: 2100 of them after the coarsening, ~1.6x a first-Lloyd
+// iteration); the last ones barely move (femur: D 1.1e-5, 1.2e-5, 8.5e-6 from the 4th on,
+// converged at the 6th). Femur (with 3 constrained-CVT rounds and at most
+// 5 polish iterations): 4 give avg Q 0.8516, Q_min 0.500, 30.0 degrees, worst boundary triangle
+// 0.600 (6: 0.8527, 0.500, 30.0, 0.600; 3: 0.8513, 0.371, 28.2, 0.522, too close to issue 13's
+// Q_min 0.35). cube_sphere converges after 1.
+constexpr int kCoarsenedRelloydIterations = 4;
+
+// The polish iterations of a free-boundary run (at most). With the boundary max-min in each
+// iteration the minimum Q keeps creeping up by ~0.01 an iteration, so the polish's own stopping
+// test (no gain in the average, the minimum or the minimum dihedral angle) can go on long after
+// the gain has become marginal: the femur ran 12 iterations (Q_min 0.31 after 3, 0.50 after 12)
+// with 3 constrained-CVT rounds, and the last boundary max-min, repair and average-quality passes
+// reach the same end with 5: avg Q 0.8527, Q_min 0.500, 30.0 degrees (4: Q_min 0.473). The
+// cube_sphere (x 1, x 0.995, x 0.996) stops by itself after 4 or 5.
+constexpr int kFreePolishIterations = 5;
 
 // The surface coarsening of a free-boundary run (o.coarsen_surface; issue 13: the femur's surface
 // is 1.6x finer than its interior): surface edges shorter than that fraction of the interior
@@ -393,7 +418,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
     BoundaryLloydOptions bl;
     // After a coarsening the constrained CVT keeps lowering its energy round after round (the
     // femur: 10 rounds instead of 5, 1 s more for no gain in the end: avg Q 0.8496 against 0.8510
-    // with 5): at most 5 rounds then.
+    // with 5): at most kCoarsenedLloydRounds then.
     bl.max_rounds = r.nb_boundary_removed > 0
                         ? std::min(o.boundary_lloyd_rounds, kCoarsenedLloydRounds)
                         : o.boundary_lloyd_rounds;
@@ -407,7 +432,8 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
     report(o, "bnd-cvt", st.rounds, 0, st.energy.empty() ? 0 : st.energy.back(),
            quality_summary(mesh, ""));
     OptimizeOptions again = o;
-    again.max_iterations = std::min(o.max_iterations, 30);
+    again.max_iterations =
+        std::min(o.max_iterations, r.nb_boundary_removed > 0 ? kCoarsenedRelloydIterations : 30);
     OptimizeResult r2;
     run_cvdt3(mesh, again, r2);
     r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
@@ -424,7 +450,9 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
   bc.flat_angle = o.feature_angle;
   bc.hausdorff = tol;
   bc.volume_budget = &budget;
-  run_polish3_with(mesh, o, polish, [&](TetMesh& m) {
+  OptimizeOptions po = o;
+  po.max_iterations = std::min(o.max_iterations, kFreePolishIterations);
+  run_polish3_with(mesh, po, polish, [&](TetMesh& m) {
     const long moved = smooth_boundary_maxmin(m, b, bm).nb_moved;
     return moved + flip_boundary_edges(m, b, bf).nb_flipped +
            remove_boundary_caps(m, b, bc).nb_removed;
