@@ -11,6 +11,7 @@
 #include "core/boundary/collapse_boundary_edges.h"
 #include "core/boundary/discrete_boundary.h"
 #include "core/boundary/flip_boundary_edges.h"
+#include "core/boundary/model_curve_edges.h"
 #include "core/boundary/remove_boundary_caps.h"
 #include "core/boundary/restore_crossing_vertices.h"
 #include "core/boundary/restore_hausdorff_vertices.h"
@@ -238,6 +239,10 @@ BoundaryModel boundary_model(const TetMesh& mesh, const OptimizeOptions& o) {
   // measured on the input triangulation (measure_on_input_boundary.h).
   if (o.boundary_model)
     if (BoundaryModel b = o.boundary_model(mesh, bo); b.geometry) {
+      // The curves' edges from the model's entities (the CAD geometry does not list them, and the
+      // surface flips and cap removals refused every edge between two curves' vertices; t20: avg
+      // 0.7374 -> 0.7379, Q_min 0.0360 -> 0.0388; t5, t13, t14, t15 unchanged).
+      if (!b.curve_edges_known) set_model_curve_edges(mesh, b);
       const double operators = hausdorff_tolerance(o, b, kOperatorShare);
       return measure_on_input_boundary(std::move(b), mesh, operators);
     }
