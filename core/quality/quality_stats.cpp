@@ -5,6 +5,43 @@
 #include <limits>
 
 namespace cvtmesh {
+namespace {
+
+// The counts of the quality table's Q rows: the four bins (0.7 < Q <= 1, 0.5 < Q <= 0.7,
+// 0.3 < Q <= 0.5, 0 < Q <= 0.3), Q <= 0, bad (Q < 0.3) and good (Q > 0.5).
+struct QCounts {
+  long bin[4] = {0, 0, 0, 0};
+  long inverted = 0, bad = 0, good = 0;
+  void add(double v) {
+    if (v > 0.7)
+      ++bin[0];
+    else if (v > 0.5)
+      ++bin[1];
+    else if (v > 0.3)
+      ++bin[2];
+    else if (v > 0)
+      ++bin[3];
+    else
+      ++inverted;
+    if (v < 0.3) ++bad;
+    if (v > 0.5) ++good;
+  }
+  void add(const QCounts& o) {
+    for (int k = 0; k < 4; ++k) bin[k] += o.bin[k];
+    inverted += o.inverted;
+    bad += o.bad;
+    good += o.good;
+  }
+  void fill(QualityStats& s) const {
+    for (int k = 0; k < 4; ++k) s.bin[k] = bin[k];
+    s.nb_inverted = inverted;
+    const double n = static_cast<double>(s.nb_elements);
+    s.bad_pct = 100.0 * static_cast<double>(bad) / n;
+    s.good_pct = 100.0 * static_cast<double>(good) / n;
+  }
+};
+
+}  // namespace
 
 std::vector<double> element_qualities(const TetMesh& mesh, Measure m) {
   // Per-tet slots filled in parallel, then the dead slots squeezed out in order: the same values
@@ -47,32 +84,20 @@ QualityStats quality_stats_from_values(const std::vector<double>& q, const std::
   s.nb_elements = static_cast<long>(q.size());
   if (q.empty()) return s;
   double sum = 0, sum_rr = 0;
-  long bad = 0, good = 0;
+  QCounts counts;
   s.q_min = std::numeric_limits<double>::infinity();
   s.q_max = -std::numeric_limits<double>::infinity();
   for (double v : q) {
     sum += v;
     s.q_min = std::min(s.q_min, v);
     s.q_max = std::max(s.q_max, v);
-    if (v > 0.7)
-      ++s.bin[0];
-    else if (v > 0.5)
-      ++s.bin[1];
-    else if (v > 0.3)
-      ++s.bin[2];
-    else if (v > 0)
-      ++s.bin[3];
-    else
-      ++s.nb_inverted;
-    if (v < 0.3) ++bad;
-    if (v > 0.5) ++good;
+    counts.add(v);
   }
+  counts.fill(s);
   for (double v : rr) sum_rr += v;
   const double n = static_cast<double>(q.size());
   s.q_avg = sum / n;
   s.avg_radius_ratio = rr.empty() ? 0 : sum_rr / static_cast<double>(rr.size());
-  s.bad_pct = 100.0 * static_cast<double>(bad) / n;
-  s.good_pct = 100.0 * static_cast<double>(good) / n;
   s.min_angle = min_angle.empty() ? 0 : *std::min_element(min_angle.begin(), min_angle.end());
   s.max_angle = max_angle.empty() ? 0 : *std::max_element(max_angle.begin(), max_angle.end());
   return s;
@@ -107,7 +132,8 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
   struct Part {
     double sum = 0, lo = std::numeric_limits<double>::infinity(),
            hi = -std::numeric_limits<double>::infinity();
-    long n = 0, bin[4] = {0, 0, 0, 0}, inverted = 0, bad = 0, good = 0;
+    long n = 0;
+    QCounts counts;
   };
   std::vector<Part> parts(static_cast<std::size_t>(nb));
 #pragma omp parallel for schedule(static, 4)
@@ -123,18 +149,7 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
       p.sum += q;
       p.lo = std::min(p.lo, q);
       p.hi = std::max(p.hi, q);
-      if (q > 0.7)
-        ++p.bin[0];
-      else if (q > 0.5)
-        ++p.bin[1];
-      else if (q > 0.3)
-        ++p.bin[2];
-      else if (q > 0)
-        ++p.bin[3];
-      else
-        ++p.inverted;
-      if (q < 0.3) ++p.bad;
-      if (q > 0.5) ++p.good;
+      p.counts.add(q);
     }
   }
   QualityStats s;
@@ -146,10 +161,7 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
     all.sum += p.sum;
     all.lo = std::min(all.lo, p.lo);
     all.hi = std::max(all.hi, p.hi);
-    for (int k = 0; k < 4; ++k) all.bin[k] += p.bin[k];
-    all.inverted += p.inverted;
-    all.bad += p.bad;
-    all.good += p.good;
+    all.counts.add(p.counts);
   }
   s.nb_elements = all.n;
   if (all.n == 0) return s;
@@ -157,10 +169,7 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
   s.q_min = all.lo;
   s.q_max = all.hi;
   s.q_avg = all.sum / n;
-  for (int k = 0; k < 4; ++k) s.bin[k] = all.bin[k];
-  s.nb_inverted = all.inverted;
-  s.bad_pct = 100.0 * static_cast<double>(all.bad) / n;
-  s.good_pct = 100.0 * static_cast<double>(all.good) / n;
+  all.counts.fill(s);
   return s;
 }
 
