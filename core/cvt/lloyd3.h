@@ -46,8 +46,7 @@ struct Lloyd3Options {
   // When the flips leave at most this many vertices short of their targets (relative to #V), or
   // faces they cannot make Delaunay (the mesh is valid either way: every move keeps its star
   // positively oriented), the iteration goes on with that mesh (its cells are clipped where it is
-  // not Delaunay) instead of rebuilding; if the last iteration left any, the mesh of the final
-  // points is rebuilt once.
+  // not Delaunay) instead of rebuilding (and at the end too: TetGen's rebuild leaves them as well).
   double max_flip_leftover = 0.01;
 };
 

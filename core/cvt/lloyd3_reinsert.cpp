@@ -26,7 +26,6 @@ Reinsertion reinsert_vertices3(TetMesh& m, const ConstrainedFaces& constrained,
   // leaves a few non-Delaunay faces near the boundary.
   Reinsertion r;
   r.delaunay = delaunay;
-  r.mesh_is_cdt = delaunay || !restored;
   if (!restored) {
     m.xyz = target;
     r.nb_steiner = backend.retetrahedralize(m).nb_steiner;

@@ -13,9 +13,8 @@
 namespace cvtmesh {
 
 struct Reinsertion {
-  bool delaunay = false;    // every unconstrained face is locally Delaunay
-  bool mesh_is_cdt = true;  // the mesh is the constrained Delaunay one of its points
-  int nb_steiner = 0;       // added by a rebuild
+  bool delaunay = false;  // every unconstrained face is locally Delaunay
+  int nb_steiner = 0;     // added by a rebuild
 };
 
 // Moves the vertices of `mesh` to `target` (3*#V). Fills s.nb_flips, s.nb_stuck_faces,
