@@ -16,7 +16,9 @@
 //    minima of Q, of the dihedral angle and of the boundary triangles' Q never decrease;
 //  - for a boundary vertex, its fan stays within the Hausdorff tolerance (fan_within_tolerance)
 //    and the move's volume change within the volume budget (charged to it).
-// Connectivity never changes. Serial, in a fixed order: the result depends on the input only.
+// Connectivity never changes. Each pass moves the interior vertices colour by colour (no two of
+// a colour share a tet), each colour in parallel, then the surface and curve vertices one by one in
+// vertex order: the result depends on the input only, not on the number of threads.
 #pragma once
 #include <limits>
 
