@@ -57,8 +57,19 @@ CellMesh prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
 }
 
 void prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
-                       bool unconstrained_delaunay, CellMesh& c) {
+                       bool unconstrained_delaunay, CellMesh& c,
+                       const std::vector<FaceKey>* suspect) {
   c.star = build_vertex_star(m);
+  // The tets of the suspect faces: tested in full.
+  std::vector<int> full;
+  if (unconstrained_delaunay && suspect)
+    for (const FaceKey& k : *suspect)
+      for (const int* it = c.star.begin_of(k[0]); it != c.star.end_of(k[0]); ++it) {
+        const int* tv = &m.tets[4 * *it];
+        if (std::find(tv, tv + 4, k[1]) != tv + 4 && std::find(tv, tv + 4, k[2]) != tv + 4)
+          full.push_back(*it);
+      }
+  std::sort(full.begin(), full.end());
   c.constrained = constrained_face_flags(m);
   c.eps = coordinate_eps(m);
   const int nt = m.nb_tets();
@@ -80,7 +91,9 @@ void prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
     bool ok = true;
     for (int f = 0; f < 4 && ok; ++f) {
       const int o = m.adj[4 * t + f];
-      if (o < 0 || (unconstrained_delaunay && !c.constrained[4 * t + f])) continue;
+      if (o < 0 || (unconstrained_delaunay && !c.constrained[4 * t + f] &&
+                    !std::binary_search(full.begin(), full.end(), t)))
+        continue;
       const int opp = m.tets[4 * (o / 4) + o % 4];
       ok = insphere(p[0], p[1], p[2], p[3], m.point(opp)) <= 0;
     }

@@ -4,6 +4,7 @@
 #pragma once
 #include <vector>
 
+#include "core/mesh/face_key.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/mesh/vertex_star.h"
 
@@ -29,12 +30,15 @@ struct CellMesh {
 
 // `rho`: per-vertex density values (optional; uniform density 1 if null). `unconstrained_delaunay`:
 // the caller knows that every unconstrained face is locally Delaunay (restored by flips), so only
-// faces with a constraint are tested.
+// faces with a constraint are tested -- except the faces in `suspect` (sorted vertex ids, e.g. the
+// faces the flips could not make Delaunay), whose two tets are tested in full. The same dual_ok
+// as testing every face, when the caller's claim holds.
 CellMesh prepare_cell_mesh(const TetMesh& mesh, const std::vector<double>* rho = nullptr,
                            bool unconstrained_delaunay = false);
 // The same into `out`, reusing its buffers (the Lloyd loop calls it every iteration).
 void prepare_cell_mesh(const TetMesh& mesh, const std::vector<double>* rho,
-                       bool unconstrained_delaunay, CellMesh& out);
+                       bool unconstrained_delaunay, CellMesh& out,
+                       const std::vector<FaceKey>* suspect = nullptr);
 
 // The gradient g (3 values) of the linear interpolant over tet t of the per-vertex values rho
 // (0 for a flat tet).

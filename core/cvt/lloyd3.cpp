@@ -48,7 +48,8 @@ class Lloyd3Problem {
     // Tets in space order: the per-tet and per-star passes of the cells then hit the cache
     // (flips scatter new tets over free slots; every few iterations is enough; sorted on entry).
     if (++iteration_ % 4 == 0) sort_tets_spatially(m_);
-    const Lloyd3Cells e = lloyd3_cells(m_, *sizing_, o_.compute_energy, delaunay_known_, cells_, s);
+    const Lloyd3Cells e =
+        lloyd3_cells(m_, *sizing_, o_.compute_energy, faces_listed_, cells_, s, &non_delaunay_);
     s.seconds_cells = seconds_since(t0);
     const MoveSafeguard3 safe = [&](const std::vector<double>& goal, std::vector<double>& out) {
       return safe_targets3(m_, cells_.cm, e.free_ids, goal, o_.max_halvings, out);
@@ -77,7 +78,8 @@ class Lloyd3Problem {
     const auto t1 = Clock::now();
     const Reinsertion r = reinsert_vertices3(m_, constrained_set_, target, o_.local_flips,
                                              o_.max_flip_leftover, *delaunay_, s);
-    delaunay_known_ = r.delaunay;
+    faces_listed_ = r.faces_listed;
+    non_delaunay_ = r.non_delaunay_faces;
     nb_steiner_ += r.nb_steiner;
     s.seconds_delaunay = seconds_since(t1);
     const auto t2 = Clock::now();
@@ -98,7 +100,10 @@ class Lloyd3Problem {
   Lloyd3CellBuffers cells_;
   AndersonLloyd3 anderson_;
   LbfgsLloyd3 lbfgs_;
-  bool delaunay_known_ = false;  // every unconstrained face is locally Delaunay
+  // Every unconstrained face not in non_delaunay_ is locally Delaunay (after the flips of the last
+  // re-insertion): the cells test only the tets of those faces (and the constrained faces).
+  bool faces_listed_ = false;
+  std::vector<FaceKey> non_delaunay_;
   bool last_check_full_ = true;
   int iteration_ = 0;
   int nb_steiner_ = 0;

@@ -73,10 +73,11 @@ CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizi
 }
 
 Lloyd3Cells lloyd3_cells(const TetMesh& m, const SizingField3& sizing, bool compute_energy,
-                         bool delaunay_known, Lloyd3CellBuffers& b, LloydStep& s) {
+                         bool delaunay_known, Lloyd3CellBuffers& b, LloydStep& s,
+                         const std::vector<FaceKey>* non_delaunay) {
   const int nv = m.nb_vertices();
   vertex_density(m, sizing, b.hints, b.H, b.rho);
-  prepare_cell_mesh(m, &b.rho, delaunay_known, b.cm);
+  prepare_cell_mesh(m, &b.rho, delaunay_known, b.cm, non_delaunay);
   const VertexStar& star = b.cm.star;
   std::vector<CellIntegrals> cells(nv);
   std::vector<char> wanted(nv, 0), clipped(nv, 1);

@@ -45,11 +45,13 @@ CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizi
 
 // The cells of every free vertex (and of the fixed ones if compute_energy: the full F), computed
 // in parallel and reduced in vertex order (the result does not depend on the number of threads).
-// `delaunay_known`: every unconstrained face of `mesh` is locally Delaunay (prepare_cell_mesh).
+// `delaunay_known`: every unconstrained face of `mesh` is locally Delaunay, except perhaps those in
+// `non_delaunay` if given (prepare_cell_mesh).
 // Fills s.energy, s.nb_free, s.D (the paper's D: the full move to the centroid, relative to H) and
 // the counts of dual and clipped cells.
 Lloyd3Cells lloyd3_cells(const TetMesh& mesh, const SizingField3& sizing, bool compute_energy,
-                         bool delaunay_known, Lloyd3CellBuffers& buffers, LloydStep& s);
+                         bool delaunay_known, Lloyd3CellBuffers& buffers, LloydStep& s,
+                         const std::vector<FaceKey>* non_delaunay = nullptr);
 
 // xyz (3*#V) with the free vertices `free_ids` moved to `free_xyz` (3 per free vertex).
 std::vector<double> with_free_positions(const std::vector<double>& xyz,

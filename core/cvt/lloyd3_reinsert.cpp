@@ -10,8 +10,10 @@ Reinsertion reinsert_vertices3(TetMesh& m, const ConstrainedFaces& constrained,
   const int nv = m.nb_vertices();
   bool restored = false;
   bool delaunay = false;
+  std::vector<FaceKey> stuck;
   if (local_flips) {
-    const RelocateStats rs = relocate_vertices(m, constrained, target);
+    RelocateStats rs = relocate_vertices(m, constrained, target);
+    stuck = std::move(rs.stuck_faces);
     s.nb_flips = rs.nb_flips;
     s.nb_stuck_faces = rs.nb_stuck;
     s.nb_short_moves = rs.nb_pending;
@@ -26,6 +28,8 @@ Reinsertion reinsert_vertices3(TetMesh& m, const ConstrainedFaces& constrained,
   // leaves a few non-Delaunay faces near the boundary.
   Reinsertion r;
   r.delaunay = delaunay;
+  r.faces_listed = restored;
+  if (restored) r.non_delaunay_faces = std::move(stuck);
   if (!restored) {
     m.xyz = target;
     r.nb_steiner = backend.retetrahedralize(m).nb_steiner;

@@ -7,6 +7,7 @@
 
 #include "core/cvt/lloyd.h"
 #include "core/delaunay/delaunay3.h"
+#include "core/mesh/face_key.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/swap/constrained_faces.h"
 
@@ -14,7 +15,11 @@ namespace cvtmesh {
 
 struct Reinsertion {
   bool delaunay = false;  // every unconstrained face is locally Delaunay
-  int nb_steiner = 0;     // added by a rebuild
+  // The flips restored the mesh: every unconstrained face not in non_delaunay_faces is locally
+  // Delaunay (false after a rebuild: TetGen's mesh is not tested).
+  bool faces_listed = false;
+  std::vector<FaceKey> non_delaunay_faces;
+  int nb_steiner = 0;  // added by a rebuild
 };
 
 // Moves the vertices of `mesh` to `target` (3*#V). Fills s.nb_flips, s.nb_stuck_faces,

@@ -136,6 +136,7 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
     st.nb_flips += rs.nb_flips23 + rs.nb_flips32;
     delaunay = delaunay && rs.ok;  // faces left stuck earlier are not tested again
     st.nb_stuck += rs.nb_stuck;
+    st.stuck_faces.insert(st.stuck_faces.end(), rs.stuck_faces.begin(), rs.stuck_faces.end());
     pending.swap(left);
     if (pending.empty()) break;
   }

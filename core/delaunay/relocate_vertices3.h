@@ -6,6 +6,7 @@
 #pragma once
 #include <vector>
 
+#include "core/mesh/face_key.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/swap/constrained_faces.h"
 
@@ -17,6 +18,9 @@ struct RelocateStats {
   int nb_flips = 0;    // 2-3 and 3-2 flips
   int nb_pending = 0;  // vertices not at their target on exit (ok = false)
   int nb_stuck = 0;    // non-Delaunay unconstrained faces no flip could remove (ok = false)
+  // Every unconstrained face that may be non-Delaunay on exit (sorted vertex ids; a superset of
+  // the nb_stuck faces: a face stuck in one round is not tested again).
+  std::vector<FaceKey> stuck_faces;
 };
 
 // `target`: 3*#V coordinates (fixed vertices must keep theirs). On entry `mesh` is valid with its

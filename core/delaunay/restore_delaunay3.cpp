@@ -1,5 +1,6 @@
 #include "core/delaunay/restore_delaunay3.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "core/geometry/predicates.h"
@@ -80,9 +81,20 @@ void flip_until_delaunay(TetMesh& m, const ConstrainedFaces& cf,
     stack.swap(stuck);
     stuck.clear();
   }
-  for (const auto& [t, f] : stuck)
-    if (m.tets[4 * t] >= 0 && non_delaunay(m, cf, t, f)) ++st.nb_stuck;
-  if (!stack.empty()) ++st.nb_stuck;
+  // Every face that may be non-Delaunay is in the stack or in `stuck` (a flip pushes the faces of
+  // the tets it makes; the symmetric insphere test makes a face's two sides one): listed when it
+  // still is. (The stack is empty unless the budget ran out or the last round ended.)
+  for (const auto* list : {&stuck, &stack})
+    for (const auto& [t, f] : *list)
+      if (m.tets[4 * t] >= 0 && non_delaunay(m, cf, t, f)) {
+        const int* tv = &m.tets[4 * t];
+        st.stuck_faces.push_back(
+            face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]));
+      }
+  std::sort(st.stuck_faces.begin(), st.stuck_faces.end());
+  st.stuck_faces.erase(std::unique(st.stuck_faces.begin(), st.stuck_faces.end()),
+                       st.stuck_faces.end());
+  st.nb_stuck = static_cast<int>(st.stuck_faces.size());
   if (!free_slots.empty()) compact_tets_fill(m);  // tet order is restored by the Lloyd loop
   st.ok = st.nb_stuck == 0;
 }

@@ -5,6 +5,7 @@
 #pragma once
 #include <vector>
 
+#include "core/mesh/face_key.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/swap/constrained_faces.h"
 
@@ -15,6 +16,9 @@ struct RestoreDelaunayStats {
   bool inverted = false;  // a tet was inverted or flat on entry: nothing was done
   int nb_flips23 = 0, nb_flips32 = 0;
   int nb_stuck = 0;  // non-Delaunay faces no flip could remove (ok = false)
+  // Those faces (sorted vertex ids): every unconstrained face of the mesh on exit that the call
+  // may have left non-Delaunay (the faces it tested or created and could not flip) is here.
+  std::vector<FaceKey> stuck_faces;
 };
 
 // `mesh` must have its adjacency built; on entry its connectivity is that of a valid mesh of the
