@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/mesh/face_buckets.h"
+
 namespace cvtmesh {
 namespace {
 
@@ -90,52 +92,38 @@ long add_missing_facets(int dim) {
   auto cell_nodes = [&](std::size_t block, std::size_t cell) {
     return &blocks[block].nodes[npe * (cell - first_cell[block])];
   };
-  // The facets sorted by their sorted dense node ids, bucketed by the smallest (a counting sort),
-  // each bucket sorted by the other two and the facet's number: equal facets are adjacent, the
-  // first cell's first.
+  // The dense ids of the cells' nodes (in the cells' order: deterministic), then the facets
+  // (cell * npe + local face) bucketed by their sorted ids (face_buckets.h): equal facets are
+  // adjacent, the first cell's first.
   DenseIds ids(max_node, nb_cells * npe);
-  struct Rec {
-    std::uint32_t b, c;   // the larger dense ids (c = 0 for an edge)
-    std::uint32_t facet;  // cell * npe + local face
-  };
   if (nb_cells * npe >= DenseIds::kNone)
     throw std::length_error("add_missing_facets: more than 2^32 facets");
   auto block_of = [&](std::size_t cell) {
     return static_cast<std::size_t>(std::upper_bound(first_cell.begin(), first_cell.end(), cell) -
                                     first_cell.begin() - 1);
   };
-  std::vector<std::uint32_t> smallest(nb_cells * npe);
-  std::vector<Rec> recs(nb_cells * npe);
-  for (std::size_t bk = 0; bk < blocks.size(); ++bk) {
-    const std::size_t n = blocks[bk].nodes.size() / npe;
-    for (std::size_t e = 0; e < n; ++e) {
+  std::vector<std::uint32_t> dense(nb_cells * npe);
+  for (std::size_t bk = 0; bk < blocks.size(); ++bk)
+    for (std::size_t e = 0; e < blocks[bk].nodes.size() / npe; ++e) {
       const std::size_t* c = &blocks[bk].nodes[npe * e];
-      const std::size_t cell = first_cell[bk] + e;
-      for (std::size_t f = 0; f < npe; ++f) {
-        std::uint32_t k[3] = {ids.get_or_add(c[local(f, 0)]), ids.get_or_add(c[local(f, 1)]),
-                              npf == 3 ? ids.get_or_add(c[local(f, 2)]) : 0};
-        std::sort(k, k + npf);
-        smallest[cell * npe + f] = k[0];
-        recs[cell * npe + f] = {k[1], npf == 3 ? k[2] : 0,
-                                static_cast<std::uint32_t>(cell * npe + f)};
-      }
+      std::uint32_t* d = &dense[npe * (first_cell[bk] + e)];
+      // Numbered facet by facet (the order the ids were given in before: the same output).
+      for (std::size_t f = 0; f < npe; ++f)
+        for (int k = 0; k < npf; ++k) d[local(f, k)] = ids.get_or_add(c[local(f, k)]);
     }
-  }
-  std::vector<std::size_t> start(ids.size() + 1, 0);
-  for (std::uint32_t a : smallest) ++start[a + 1];
-  for (std::size_t i = 0; i < ids.size(); ++i) start[i + 1] += start[i];
-  std::vector<Rec> sorted(recs.size());
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < recs.size(); ++i) sorted[fill[smallest[i]]++] = recs[i];
-  }
-  recs.clear();
-  recs.shrink_to_fit();
-  auto less = [](const Rec& x, const Rec& y) {
-    return x.b != y.b ? x.b < y.b : x.c != y.c ? x.c < y.c : x.facet < y.facet;
-  };
-  for (std::size_t a = 0; a < ids.size(); ++a)
-    std::sort(sorted.begin() + start[a], sorted.begin() + start[a + 1], less);
+  FaceBuckets fb = bucket_faces(ids.size(), nb_cells * npe, [&](std::size_t i, std::uint32_t* k) {
+    const std::uint32_t* c = &dense[i - i % npe];
+    const std::size_t f = i % npe;
+    k[0] = c[local(f, 0)];
+    k[1] = c[local(f, 1)];
+    k[2] = npf == 3 ? c[local(f, 2)] : 0;
+    std::sort(k, k + npf);
+    return true;
+  });
+  dense.clear();
+  dense.shrink_to_fit();
+  std::vector<FaceRecord>& sorted = fb.records;
+  const std::vector<std::size_t>& start = fb.start;
   // Facets that are elements already (their first record marked); the largest element tag.
   std::vector<char> present(sorted.size(), 0);
   std::size_t max_tag = 0;
@@ -155,10 +143,10 @@ long add_missing_facets(int dim) {
         }
         if (!known) continue;
         std::sort(key, key + npf);
-        const Rec probe{key[1], npf == 3 ? key[2] : 0, 0};
+        const FaceRecord probe{key[1], npf == 3 ? key[2] : 0, 0};
         auto first = sorted.begin() + start[key[0]], last = sorted.begin() + start[key[0] + 1];
-        auto it = std::lower_bound(first, last, probe, less);
-        if (it != last && it->b == probe.b && it->c == probe.c) present[it - sorted.begin()] = 1;
+        auto it = std::lower_bound(first, last, probe);
+        if (it != last && same_face(*it, probe)) present[it - sorted.begin()] = 1;
       }
     }
   }
@@ -167,13 +155,13 @@ long add_missing_facets(int dim) {
   for (std::size_t a = 0; a < ids.size(); ++a) {
     for (std::size_t i = start[a]; i < start[a + 1];) {
       std::size_t j = i + 1;
-      while (j < start[a + 1] && sorted[j].b == sorted[i].b && sorted[j].c == sorted[i].c) ++j;
+      while (j < start[a + 1] && same_face(sorted[j], sorted[i])) ++j;
       if (!present[i]) {
         Facet fc;
         fc.count = static_cast<int>(j - i);
         for (std::size_t k = 0; k < 2 && i + k < j; ++k)
-          fc.cell_entity[k] = blocks[block_of(sorted[i + k].facet / npe)].entity;
-        const std::size_t cell = sorted[i].facet / npe, f = sorted[i].facet % npe;
+          fc.cell_entity[k] = blocks[block_of(sorted[i + k].id / npe)].entity;
+        const std::size_t cell = sorted[i].id / npe, f = sorted[i].id % npe;
         const std::size_t* c = cell_nodes(block_of(cell), cell);
         for (int k = 0; k < npf; ++k) fc.nodes[k] = c[local(f, k)];
         const bool boundary = fc.count == 1;
@@ -183,8 +171,7 @@ long add_missing_facets(int dim) {
       i = j;
     }
   }
-  sorted.clear();
-  sorted.shrink_to_fit();
+  fb = FaceBuckets{};
   // Node classification on the lower-dimensional entities.
   std::unordered_map<std::size_t, std::pair<int, int>> where;
   for (int d = 0; d < dim; ++d) {
