@@ -68,15 +68,34 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
     const BoundaryFans fans = boundary_fans(mesh);
     long moved = 0, refused = 0, nb_boundary = 0;
     double sum_move2 = 0;
-    for (int v = 0; v < mesh.nb_vertices(); ++v) {
+    const int nv = mesh.nb_vertices();
+    auto target = [&](int v, double* wanted) {
+      const double* z = mesh.point(v);
+      for (int d = 0; d < 3; ++d) wanted[d] = z[d] + omega * (cc.centroid[3 * v + d] - z[d]);
+    };
+    // The boundary targets projected onto their entities first, in parallel: a vertex's target
+    // and projection depend only on its own position and centroid, which no other move changes
+    // (build/cvtmesh -v optimize /work/tmp/c1m.msh, 1M tets, 24890 boundary vertices, timers
+    // around the round's parts: the projections were 0.23 s of the 1.1-1.4 s of serial moves over
+    // 3 rounds; the rest reads the neighbours' moves, in vertex order).
+    std::vector<double> projected(3 * static_cast<std::size_t>(nv));
+    std::vector<char> has_projection(nv, 0);
+#pragma omp parallel for schedule(dynamic, 256) if (model.geometry && model.geometry->thread_safe())
+    for (int v = 0; v < nv; ++v)
+      if (star.nb_tets_of(v) > 0 && model.movable(v)) {
+        double wanted[3];
+        target(v, wanted);
+        has_projection[v] = project_on_entity(model, v, wanted, &projected[3 * v]);
+      }
+    for (int v = 0; v < nv; ++v) {
       if (star.nb_tets_of(v) == 0) continue;
       const double* z = mesh.point(v);
-      double wanted[3];
-      for (int d = 0; d < 3; ++d) wanted[d] = z[d] + omega * (cc.centroid[3 * v + d] - z[d]);
       if (model.movable(v)) {
         ++nb_boundary;
         const PlannedBoundaryMove plan =
-            plan_boundary_move(mesh, model, star, fans, v, wanted, o.hausdorff);
+            has_projection[v]
+                ? check_boundary_move(mesh, model, star, fans, v, &projected[3 * v], o.hausdorff)
+                : PlannedBoundaryMove{BoundaryMoveStatus::kNoProjection};
         if (plan.status != BoundaryMoveStatus::kOk) {
           ++refused;
           continue;
@@ -102,6 +121,8 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
         ++moved;
       } else if (o.move_interior && v < static_cast<int>(mesh.vclass.size()) &&
                  mesh.vclass[v].dim == 3) {
+        double wanted[3];
+        target(v, wanted);
         move_interior(mesh, star, v, wanted);
       }
     }

@@ -20,10 +20,19 @@ PlannedBoundaryMove plan_boundary_move(const TetMesh& m, const BoundaryModel& mo
                                        const double* wanted, double hausdorff) {
   PlannedBoundaryMove plan;
   if (!model.movable(v)) return plan;
-  if (!project_on_entity(model, v, wanted, plan.position)) {
+  double q[3];
+  if (!project_on_entity(model, v, wanted, q)) {
     plan.status = BoundaryMoveStatus::kNoProjection;
     return plan;
   }
+  return check_boundary_move(m, model, star, fans, v, q, hausdorff);
+}
+
+PlannedBoundaryMove check_boundary_move(const TetMesh& m, const BoundaryModel& model,
+                                        const VertexTets& star, const BoundaryFans& fans, int v,
+                                        const double* position, double hausdorff) {
+  PlannedBoundaryMove plan;
+  for (int d = 0; d < 3; ++d) plan.position[d] = position[d];
   for (int d = 0; d < 3; ++d)
     if (!std::isfinite(plan.position[d])) {
       plan.status = BoundaryMoveStatus::kNoProjection;

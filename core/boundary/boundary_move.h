@@ -33,6 +33,14 @@ PlannedBoundaryMove plan_boundary_move(const TetMesh& mesh, const BoundaryModel&
                                        const VertexTets& star, const BoundaryFans& fans, int v,
                                        const double* wanted, double hausdorff);
 
+// plan_boundary_move's checks only, for `position` already on v's entity (what project_on_entity
+// gave for the wanted position; kNoProjection if not finite): the same plan as
+// plan_boundary_move's. For callers that project many targets at once (in parallel: a projection
+// reads only the geometry).
+PlannedBoundaryMove check_boundary_move(const TetMesh& mesh, const BoundaryModel& model,
+                                        const VertexTets& star, const BoundaryFans& fans, int v,
+                                        const double* position, double hausdorff);
+
 // Whether v's fan, with v at `position`, stays within `hausdorff` of the reference boundary: at
 // each triangle's sample points (boundary_hausdorff.h: centroid, edge midpoints, (2/3,1/6,1/6));
 // and the other way, every fan vertex's input position within `hausdorff` of its own fan

@@ -7,18 +7,53 @@
 #include "core/mesh/face_key.h"
 #include "core/mesh/locate_point.h"
 #include "core/mesh/sort_tets.h"
+#include "core/mesh/vertex_tets.h"
 
 namespace cvtmesh {
 
+namespace {
+
+// The vertices of v's star above v, sorted, each once. seen (#V, this thread's): the last vertex
+// whose star listed each vertex (so each is listed once without sorting the ~100 tet corners).
+void higher_neighbours(const TetMesh& m, const VertexTets& star, int v, std::vector<int>& seen,
+                       std::vector<int>& out) {
+  out.clear();
+  for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
+    for (int k = 0; k < 4; ++k) {
+      const int w = m.tets[4 * static_cast<std::size_t>(*t) + k];
+      if (w > v && seen[w] != v) {
+        seen[w] = v;
+        out.push_back(w);
+      }
+    }
+  std::sort(out.begin(), out.end());
+}
+
+}  // namespace
+
 std::vector<EdgeKey> unique_edges(const TetMesh& m) {
-  std::vector<EdgeKey> edges;
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* v = &m.tets[4 * t];
-    if (v[0] < 0) continue;
-    for (const auto& e : kTetEdge) edges.push_back(edge_key(v[e[0]], v[e[1]]));
+  // Vertex by vertex (in parallel, blocks of vertices concatenated in order), each vertex's edges
+  // to the higher ids of its star: the same sorted list without sorting the 6 #T (tet, edge)
+  // pairs. build/cvtmesh optimize /work/tmp/c1m.msh --sizing uniform (1M tets, 159k vertices;
+  // the old and the new list timed in one run, 2 threads): 0.21 s instead of 0.80 s; every mesh
+  // sizing (each Lloyd run, the constrained CVT) and mean_edge_length (the constrained CVT) build
+  // it.
+  const VertexTets star = vertex_tets(m);
+  const int nv = m.nb_vertices();
+  constexpr int kBlock = 1024;
+  std::vector<std::vector<EdgeKey>> block((nv + kBlock - 1) / kBlock);
+#pragma omp parallel
+  {
+    std::vector<int> nb, seen(nv, -1);
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < static_cast<int>(block.size()); ++b)
+      for (int v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v) {
+        higher_neighbours(m, star, v, seen, nb);
+        for (int w : nb) block[b].push_back({v, w});
+      }
   }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<EdgeKey> edges;
+  for (const auto& b : block) edges.insert(edges.end(), b.begin(), b.end());
   return edges;
 }
 

@@ -4,6 +4,7 @@
 // on their edges and corners in place, never invert a tet, never raise the CVT energy, and make
 // the faces' triangles better.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -178,6 +179,38 @@ TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
   ASSERT_GE(s.energy.size(), 3u);
   for (std::size_t i = 1; i < s.energy.size(); ++i) EXPECT_LE(s.energy[i], s.energy[i - 1]) << i;
   EXPECT_LT(s.energy.back(), 0.99 * s.energy.front());
+}
+
+// The boundary targets are projected in parallel, the moves made in vertex order: the same mesh,
+// counts and energies for any number of threads (cube_sphere: ~1k boundary vertices, several
+// chunks of the projection loop; with the volume budget and the Hausdorff check of a run).
+TEST(BoundaryLloyd, SameResultForAnyNumberOfThreads) {
+  std::vector<TetMesh> out;
+  std::vector<BoundaryLloydStats> stats;
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    TetMesh m = testing::unoptimized_cube_sphere();
+    const BoundaryModel b = make_discrete_boundary(m);
+    const auto sizing = make_uniform_sizing3(mean_edge_length(m));
+    VolumeBudget budget = VolumeBudget::of(m, 0.001);
+    BoundaryLloydOptions o;
+    o.max_rounds = 3;
+    o.hausdorff = 1e-3 * b.diagonal;
+    o.volume_budget = &budget;
+    stats.push_back(boundary_lloyd(m, b, *sizing, o));
+    out.push_back(std::move(m));
+  }
+  omp_set_num_threads(saved);
+  EXPECT_GT(stats[0].nb_moved, 1000);
+  for (std::size_t k = 1; k < out.size(); ++k) {
+    SCOPED_TRACE("run " + std::to_string(k));
+    EXPECT_EQ(out[k].xyz, out[0].xyz);
+    EXPECT_EQ(out[k].tets, out[0].tets);
+    EXPECT_EQ(stats[k].nb_moved, stats[0].nb_moved);
+    EXPECT_EQ(stats[k].nb_refused, stats[0].nb_refused);
+    EXPECT_EQ(stats[k].energy, stats[0].energy);
+  }
 }
 
 TEST(BoundaryMoves, ARefusedMoveLeavesTheMeshUnchanged) {
