@@ -4,7 +4,6 @@
 // on their edges and corners in place, never invert a tet, never raise the CVT energy, and make
 // the faces' triangles better.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +19,7 @@
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality.h"
+#include "tests/support/thread_counts.h"
 #include "tests/swap/swap_test_util.h"
 
 namespace cvtmesh {
@@ -185,11 +185,7 @@ TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
 // counts and energies for any number of threads (cube_sphere: ~1k boundary vertices, several
 // chunks of the projection loop; with the volume budget and the Hausdorff check of a run).
 TEST(BoundaryLloyd, SameResultForAnyNumberOfThreads) {
-  std::vector<TetMesh> out;
-  std::vector<BoundaryLloydStats> stats;
-  const int saved = omp_get_max_threads();
-  for (int threads : {1, 2, 3}) {
-    omp_set_num_threads(threads);
+  const auto runs = testing::for_each_thread_count([] {
     TetMesh m = testing::unoptimized_cube_sphere();
     const BoundaryModel b = make_discrete_boundary(m);
     const auto sizing = make_uniform_sizing3(mean_edge_length(m));
@@ -198,18 +194,18 @@ TEST(BoundaryLloyd, SameResultForAnyNumberOfThreads) {
     o.max_rounds = 3;
     o.hausdorff = 1e-3 * b.diagonal;
     o.volume_budget = &budget;
-    stats.push_back(boundary_lloyd(m, b, *sizing, o));
-    out.push_back(std::move(m));
-  }
-  omp_set_num_threads(saved);
-  EXPECT_GT(stats[0].nb_moved, 1000);
-  for (std::size_t k = 1; k < out.size(); ++k) {
+    const BoundaryLloydStats st = boundary_lloyd(m, b, *sizing, o);
+    return std::make_pair(std::move(m), st);
+  });
+  EXPECT_GT(runs[0].second.nb_moved, 1000);
+  for (std::size_t k = 1; k < runs.size(); ++k) {
     SCOPED_TRACE("run " + std::to_string(k));
-    EXPECT_EQ(out[k].xyz, out[0].xyz);
-    EXPECT_EQ(out[k].tets, out[0].tets);
-    EXPECT_EQ(stats[k].nb_moved, stats[0].nb_moved);
-    EXPECT_EQ(stats[k].nb_refused, stats[0].nb_refused);
-    EXPECT_EQ(stats[k].energy, stats[0].energy);
+    const auto& [m, st] = runs[k];
+    EXPECT_EQ(m.xyz, runs[0].first.xyz);
+    EXPECT_EQ(m.tets, runs[0].first.tets);
+    EXPECT_EQ(st.nb_moved, runs[0].second.nb_moved);
+    EXPECT_EQ(st.nb_refused, runs[0].second.nb_refused);
+    EXPECT_EQ(st.energy, runs[0].second.energy);
   }
 }
 

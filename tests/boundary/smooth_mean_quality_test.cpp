@@ -11,8 +11,6 @@
 #include <cmath>
 #include <fstream>
 
-#include <omp.h>
-
 #include "core/boundary/discrete_boundary.h"
 #include "core/boundary/smooth_mean_quality.h"
 #include "core/boundary/verify_free_boundary.h"
@@ -26,6 +24,7 @@
 #include "core/quality/time_step_guard.h"
 #include "core/swap/swap_slivers.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/thread_counts.h"
 #include "tests/swap/swap_test_util.h"
 
 namespace cvtmesh {
@@ -219,26 +218,23 @@ TEST(SwapSumCriterion, TheSumLessTheStartMeanRisesAndTheMinimumNeverFalls) {
 // several hundred, above the one-thread cut).
 TEST(SmoothMeanQuality, SameResultForAnyNumberOfThreads) {
   for (const bool dt_guard : {false, true}) {
-    std::vector<TetMesh> out;
-    std::vector<MeanQualityStats> stats;
-    const int saved = omp_get_max_threads();
-    for (int threads : {1, 2, 3}) {
-      omp_set_num_threads(threads);
+    const auto runs = testing::for_each_thread_count([dt_guard] {
       TetMesh m = testing::unoptimized_cube_sphere();
       MeanQualityOptions o;
       if (dt_guard) o.dt_guard = time_step_guard(m, 1.0);
-      stats.push_back(smooth_mean_quality(m, BoundaryModel{}, o));
-      out.push_back(std::move(m));
-    }
-    omp_set_num_threads(saved);
-    EXPECT_GT(stats[0].nb_moved, 1000);
-    EXPECT_GT(stats[0].sum_after, stats[0].sum_before);
-    for (std::size_t k = 1; k < out.size(); ++k) {
+      const MeanQualityStats st = smooth_mean_quality(m, BoundaryModel{}, o);
+      return std::make_pair(std::move(m), st);
+    });
+    const MeanQualityStats& first = runs[0].second;
+    EXPECT_GT(first.nb_moved, 1000);
+    EXPECT_GT(first.sum_after, first.sum_before);
+    for (std::size_t k = 1; k < runs.size(); ++k) {
       SCOPED_TRACE("dt_guard " + std::to_string(dt_guard) + ", run " + std::to_string(k));
-      EXPECT_EQ(out[k].xyz, out[0].xyz);
-      EXPECT_EQ(stats[k].nb_tried, stats[0].nb_tried);
-      EXPECT_EQ(stats[k].nb_moved, stats[0].nb_moved);
-      EXPECT_EQ(stats[k].nb_steps, stats[0].nb_steps);
+      const auto& [m, st] = runs[k];
+      EXPECT_EQ(m.xyz, runs[0].first.xyz);
+      EXPECT_EQ(st.nb_tried, first.nb_tried);
+      EXPECT_EQ(st.nb_moved, first.nb_moved);
+      EXPECT_EQ(st.nb_steps, first.nb_steps);
     }
   }
 }

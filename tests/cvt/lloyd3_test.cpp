@@ -14,6 +14,7 @@
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/thread_counts.h"
 
 namespace cvtmesh {
 namespace {
@@ -223,29 +224,19 @@ TEST(Lloyd3, LbfgsAcceptedEnergiesNeverIncreaseAndBeatPlainLloyd) {
   EXPECT_LT(all.back(), plain_energy.back());
 }
 
-}  // namespace
-}  // namespace cvtmesh
-
-#include <omp.h>
-
-namespace cvtmesh {
-namespace {
-
 TEST(Lloyd3, SameResultForAnyThreadCount) {
   const MeshData init = testing::cube_sphere(0.14, 0.1);
-  std::vector<TetMesh> results;
-  const int saved = omp_get_max_threads();
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
-    TetMesh m = init.tet;
-    Lloyd3Options o;
-    o.lloyd.max_iterations = 4;
-    o.anderson_depth = 5;
-    o.relaxation = 1.5;
-    lloyd_optimize_3d(m, o);
-    results.push_back(m);
-  }
-  omp_set_num_threads(saved);
+  const auto results = testing::for_each_thread_count(
+      [&init] {
+        TetMesh m = init.tet;
+        Lloyd3Options o;
+        o.lloyd.max_iterations = 4;
+        o.anderson_depth = 5;
+        o.relaxation = 1.5;
+        lloyd_optimize_3d(m, o);
+        return m;
+      },
+      {1, 2});
   EXPECT_EQ(results[0].xyz, results[1].xyz);  // bitwise
   EXPECT_EQ(results[0].tets, results[1].tets);
 }

@@ -1,7 +1,6 @@
 #include "core/swap/swap_slivers.h"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <map>
@@ -11,6 +10,7 @@
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
 #include "core/quality/time_step_guard.h"
+#include "tests/support/thread_counts.h"
 #include "tests/swap/swap_test_util.h"
 
 namespace cvtmesh {
@@ -138,27 +138,24 @@ TEST(SwapSlivers, LeavesTheKuhnCubeValid) {
 // any number of threads, with the time-step guard too (its nodal sums read around the cavities).
 TEST(SwapSlivers, SameResultForAnyNumberOfThreads) {
   for (const bool dt_guard : {false, true}) {
-    std::vector<TetMesh> out;
-    std::vector<SwapStats> stats;
-    const int saved = omp_get_max_threads();
-    for (int threads : {1, 2, 3}) {
-      omp_set_num_threads(threads);
+    const auto runs = testing::for_each_thread_count([dt_guard] {
       TetMesh m = unoptimized_cube_sphere();
       SwapOptions o;
       if (dt_guard) o.dt_guard = time_step_guard(m, 1.0);
-      stats.push_back(swap_slivers(m, o));
-      out.push_back(std::move(m));
-    }
-    omp_set_num_threads(saved);
-    EXPECT_GT(stats[0].nb_flip32 + stats[0].nb_edge_removals + stats[0].nb_flip23, 0);
-    for (std::size_t k = 1; k < out.size(); ++k) {
+      const SwapStats st = swap_slivers(m, o);
+      return std::make_pair(std::move(m), st);
+    });
+    const SwapStats& first = runs[0].second;
+    EXPECT_GT(first.nb_flip32 + first.nb_edge_removals + first.nb_flip23, 0);
+    for (std::size_t k = 1; k < runs.size(); ++k) {
       SCOPED_TRACE("dt_guard " + std::to_string(dt_guard) + ", run " + std::to_string(k));
-      EXPECT_EQ(out[k].tets, out[0].tets);
-      EXPECT_EQ(out[k].tet_region, out[0].tet_region);
-      EXPECT_EQ(stats[k].nb_tried, stats[0].nb_tried);
-      EXPECT_EQ(stats[k].nb_flip23, stats[0].nb_flip23);
-      EXPECT_EQ(stats[k].nb_by_ring, stats[0].nb_by_ring);
-      EXPECT_EQ(stats[k].passes, stats[0].passes);
+      const auto& [m, st] = runs[k];
+      EXPECT_EQ(m.tets, runs[0].first.tets);
+      EXPECT_EQ(m.tet_region, runs[0].first.tet_region);
+      EXPECT_EQ(st.nb_tried, first.nb_tried);
+      EXPECT_EQ(st.nb_flip23, first.nb_flip23);
+      EXPECT_EQ(st.nb_by_ring, first.nb_by_ring);
+      EXPECT_EQ(st.passes, first.passes);
     }
   }
 }
