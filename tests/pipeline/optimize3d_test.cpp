@@ -85,6 +85,7 @@ TEST(Optimize3d, LloydMethodsReportNotConvergedWhenStoppedByTheIterationLimit) {
 #include <omp.h>
 
 #include "core/util/thread_count.h"
+#include "tests/support/thread_counts.h"
 
 namespace cvtmesh {
 namespace {
@@ -94,7 +95,7 @@ namespace {
 // caller's count back afterwards.
 TEST(Optimize3d, RunsOnItsOwnThreadCountAndRestoresTheCallers) {
   const MeshData init = testing::cube_sphere(0.2, 0.15);  // read through Gmsh
-  const int saved = omp_get_max_threads();
+  testing::ThreadCountGuard restore;
   omp_set_num_threads(1);
   MeshData d = init;
   OptimizeOptions o;
@@ -104,7 +105,6 @@ TEST(Optimize3d, RunsOnItsOwnThreadCountAndRestoresTheCallers) {
   o.progress = [&](const OptimizeProgress&) { seen.push_back(omp_get_max_threads()); };
   optimize(d, o);
   const int after = omp_get_max_threads();
-  omp_set_num_threads(saved);
   ASSERT_FALSE(seen.empty());
   for (int n : seen) EXPECT_EQ(n, default_thread_count());
   EXPECT_EQ(after, 1);
