@@ -215,7 +215,8 @@ std::vector<OptionSpec> make_schema() {
   v.push_back(number("mean_passes", "--mean-passes", &O::mean_passes, 0, 20,
                      "free boundary: passes of the average-quality smoothing (each vertex moved "
                      "to raise its star's sum of Q, the minimum kept) and the flips on the "
-                     "average at the end (0 = none)",
+                     "average at the end, at most (a pass follows only one that raised the "
+                     "average Q by 0.008 or more; 0 = none)",
                      kDim3));
   v.push_back(number("coarsen_surface", "--coarsen-surface", &O::coarsen_surface, 0, 1,
                      "free boundary: surface edges shorter than this fraction of the interior "
