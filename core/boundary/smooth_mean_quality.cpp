@@ -306,10 +306,12 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
   double q_floor = o.q_floor, angle_floor = o.angle_floor, tri_floor = o.tri_floor;
   {
     double sum = 0, q_min = kInf, a_min = kInf, t_min = kInf;
-#pragma omp parallel for schedule(static, 4096) reduction(+ : sum) reduction(min : q_min, a_min)
+    long live = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(+ : sum, live) reduction(min : q_min, a_min)
     for (int t = 0; t < nt; ++t)
       if (tet_of(mesh, t)[0] >= 0) {
         const double q = q_of(mesh, t);
+        ++live;
         sum += q;
         q_min = std::min(q_min, q);
         a_min = std::min(a_min, angle_of(mesh, t));
@@ -317,6 +319,7 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
     if (boundary)
       for (int f = 0; f < mesh.nb_tris(); ++f) t_min = std::min(t_min, tri_q_of(mesh, f));
     stats.sum_before = stats.sum_after = sum;
+    stats.nb_tets = live;
     q_floor = std::max(q_floor, q_min);
     angle_floor = std::max(angle_floor, a_min);
     if (t_min < kInf) tri_floor = std::max(tri_floor, t_min);

@@ -50,6 +50,7 @@ struct MeanQualityOptions {
 struct MeanQualityStats {
   long nb_tried = 0, nb_moved = 0, nb_steps = 0;
   double sum_before = 0, sum_after = 0;  // sum of Q over the live tets
+  long nb_tets = 0;                      // the live tets
 };
 
 // Dead tets (tets[4t] < 0) are ignored; mesh.adj is not needed. Vertices with vclass.dim < 3 move
