@@ -1,8 +1,10 @@
 // cvtmesh: the command-line front end. Parses arguments, calls core/, prints. Nothing else.
 #include <CLI/CLI.hpp>
+#include <malloc.h>
 
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <new>
 #include <string>
 
@@ -12,6 +14,15 @@
 #include "core/util/error.h"
 
 int main(int argc, char** argv) {
+  // Freed memory kept for the next allocation instead of given back: glibc serves arrays above
+  // 32 MB from fresh mmaps, each page of which the kernel zeroes on first touch, so at ~10M tets
+  // (arrays of 40-400 MB made and freed every iteration) a run spent ~58 s of CPU in page faults.
+  // `cvtmesh -v optimize` of the 9.15M-tet cube_sphere Init (docs/benchmarks.md, stop 28), with
+  // the same settings through GLIBC_TUNABLES (mmap_max=0, trim threshold 64 GB): 530.7 -> 482.1 s
+  // in optimize, system time 57.7 -> 23.5 s, peak RSS 7.67 GB. At ~1M tets (c1m) the same time
+  // (glibc's own threshold adapts below 32 MB) and peak RSS 823 -> 849 MB.
+  mallopt(M_MMAP_MAX, 0);
+  mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());  // 2 GB free at the top
   CLI::App app{"cvtmesh " CVTMESH_VERSION
                " - CVT (centroidal Voronoi) mesh optimization for Gmsh meshes (Du & Wang)"};
   app.set_version_flag("--version", "cvtmesh " CVTMESH_VERSION);

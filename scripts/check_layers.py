@@ -38,7 +38,8 @@ FORBIDDEN = ["FL/", "onelab", "GmshSocket", "gmsh.h_cwrap", "CLI/", "pybind11"]
 STD = re.compile(r"^[a-z_0-9]+(\.h)?$")  # <vector>, <cmath>, <omp.h>, <dlfcn.h>, ...
 SYS_OK = {"omp.h", "dlfcn.h", "unistd.h", "fcntl.h", "sys/stat.h", "sys/types.h", "sys/wait.h",
           "sys/resource.h", "signal.h", "errno.h", "link.h", "sys/mman.h", "poll.h",
-          "sys/time.h", "execinfo.h", "cxxabi.h"}
+          "sys/time.h", "execinfo.h", "cxxabi.h",
+          "parallel/algorithm"}  # libstdc++'s parallel mode (__gnu_parallel::sort, OpenMP)
 
 
 def closure(layer):

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <parallel/algorithm>
 #include <utility>
 #include <vector>
 
@@ -82,20 +83,28 @@ void sort_tets_spatially(TetMesh& m) {
   const int nt = m.nb_tets();
   double lo[3], scale[3];
   bounding_box(m, lo, scale);
-  std::vector<std::pair<std::uint64_t, int>> key;
-  key.reserve(nt);
+  // Keys in parallel (dead tets last: the largest code), sorted in parallel (the keys are
+  // distinct: the same order whatever the threads), the arrays permuted in parallel (the
+  // Lloyd iteration sorts every 4th iteration: ~2.5 s of one thread at 9M tets).
+  std::vector<std::pair<std::uint64_t, int>> key(static_cast<std::size_t>(nt));
+  int live = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(+ : live)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * static_cast<std::size_t>(t)];
-    if (tv[0] < 0) continue;
+    if (tv[0] < 0) {
+      key[t] = {std::numeric_limits<std::uint64_t>::max(), t};
+      continue;
+    }
+    ++live;
     double c[3] = {0, 0, 0};
     for (int d = 0; d < 3; ++d)
       for (int k = 0; k < 4; ++k) c[d] += 0.25 * m.xyz[3 * static_cast<std::size_t>(tv[k]) + d];
-    const std::uint64_t code = morton(c, lo, scale);
-    key.push_back({code, t});
+    key[t] = {morton(c, lo, scale), t};
   }
-  std::sort(key.begin(), key.end());
-  const int live = static_cast<int>(key.size());
+  __gnu_parallel::sort(key.begin(), key.end());
+  key.resize(static_cast<std::size_t>(live));
   std::vector<int> new_id(static_cast<std::size_t>(nt), -1);
+#pragma omp parallel for schedule(static, 4096)
   for (int i = 0; i < live; ++i) new_id[key[i].second] = i;
   const bool has_adj = m.adj.size() == m.tets.size();
   const bool has_tags = m.tet_tags.size() == static_cast<std::size_t>(nt);
@@ -103,6 +112,7 @@ void sort_tets_spatially(TetMesh& m) {
   std::vector<std::size_t> tags;
   if (has_adj) adj.resize(tets.size());
   if (has_tags) tags.resize(live);
+#pragma omp parallel for schedule(static, 4096)
   for (int i = 0; i < live; ++i) {
     const int t = key[i].second;
     for (int k = 0; k < 4; ++k) {

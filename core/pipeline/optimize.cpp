@@ -16,6 +16,7 @@
 #include "core/boundary/restore_crossing_vertices.h"
 #include "core/boundary/restore_hausdorff_vertices.h"
 #include "core/boundary/smooth_boundary_maxmin.h"
+#include "core/smoothing/smooth_maxmin3.h"
 #include "core/boundary/smooth_mean_quality.h"
 #include "core/boundary/verify_free_boundary.h"
 #include "core/cvt/lloyd3.h"
@@ -172,6 +173,7 @@ constexpr double kPolishAverageTolerance = 5e-4;
 struct PolishStop {
   double average = kPolishAverageTolerance;
   double minimum = CombinedOptions{}.tolerance;
+  double angle = CombinedOptions{}.angle_tolerance;
 };
 
 void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r,
@@ -183,6 +185,7 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
   co.smoothing_passes = kPolishLaplacianPasses;
   co.average_tolerance = stop.average;
   co.tolerance = stop.minimum;
+  co.angle_tolerance = stop.angle;
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
   co.swap.guard_floor = o.polish_q_floor;
@@ -314,6 +317,31 @@ void repair_below_targets(TetMesh& mesh, const OptimizeOptions& o) {
   if (guarded && min_time_step(mesh) < dt_before) mesh = before;
 }
 
+// After boundary vertices went back to their input positions (restore_crossing_vertices): the
+// max-min smoothing of the interior vertices of the tets around them left below Q 0.5 or a 30
+// degree dihedral angle (those tets only: the rest of the mesh keeps what the average-quality
+// passes made of it; the boundary stays where the restore put it, so no new crossing), under
+// the polish's time-step guard. `before`: the coordinates before the restore.
+void smooth_after_restore(TetMesh& mesh, const std::vector<double>& before,
+                          const OptimizeOptions& o) {
+  std::vector<char> restored(static_cast<std::size_t>(mesh.nb_vertices()), 0);
+  for (int v = 0; v < mesh.nb_vertices(); ++v)
+    for (int k = 0; k < 3; ++k) restored[v] |= mesh.point(v)[k] != before[3 * v + k];
+  std::vector<char> around(static_cast<std::size_t>(mesh.nb_tets()), 0);
+  for (int t = 0; t < mesh.nb_tets(); ++t) {
+    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    if (tv[0] >= 0)
+      around[t] = restored[tv[0]] | restored[tv[1]] | restored[tv[2]] | restored[tv[3]];
+  }
+  MaxMinOptions mo;
+  mo.only_tets = &around;
+  if (o.objective == "dt")
+    mo.dt_guard = time_step_guard(mesh, std::numeric_limits<double>::infinity());
+  else if (o.polish_dt_guard)
+    mo.dt_guard = time_step_guard(mesh, o.polish_dt_floor);
+  smooth_maxmin3(mesh, mo);
+}
+
 // A pass of the average-quality smoothing after the first follows only a pass that raised the
 // average Q (its moves' gain in the sum of Q over the tets) by at least this: each pass gains
 // 11-17% of the one before (`cvtmesh optimize M.msh`, the first two passes: cube_sphere at h x 1,
@@ -432,6 +460,8 @@ constexpr double kFreePolishAverageTolerance = 3e-3;
 // than 1e-3, the minimum dihedral angle by more than 0.01 degrees, the average by more than 3e-3,
 // or nothing).
 constexpr double kFreePolishMinTolerance = 1e-3;
+// And the minimum dihedral angle's (degrees).
+constexpr double kFreePolishAngleTolerance = 0.1;
 
 // The surface coarsening of a free-boundary run (o.coarsen_surface; issue 13: the femur's surface
 // is 1.6x finer than its interior): surface edges shorter than that fraction of the interior
@@ -531,7 +561,8 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
         return moved + flip_boundary_edges(m, b, bf).nb_flipped +
                remove_boundary_caps(m, b, bc).nb_removed;
       },
-      o.mean_passes > 0 ? PolishStop{kFreePolishAverageTolerance, kFreePolishMinTolerance}
+      o.mean_passes > 0 ? PolishStop{kFreePolishAverageTolerance, kFreePolishMinTolerance,
+                                     kFreePolishAngleTolerance}
                         : PolishStop{});
   bm.passes = 2;
   remove_boundary_caps(mesh, b, bc);
@@ -634,7 +665,9 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
     run_cvdt_swap_smooth_free3(mesh, o, *b, r);
     // Where the moved surface crosses itself, its vertices there go back to the input surface
     // (the check at the end fails the method if that was not enough).
+    const std::vector<double> before_restore = mesh.xyz;
     const RestoreCrossingStats rc = restore_crossing_vertices(mesh, input);
+    if (rc.nb_restored > 0) smooth_after_restore(mesh, before_restore, o);
     if (rc.nb_pairs_before > 0 && rc.nb_restored > 0)
       r.notes.push_back("the free boundary made " + std::to_string(rc.nb_pairs_before) +
                         " pairs of boundary triangles cross: " + std::to_string(rc.nb_restored) +

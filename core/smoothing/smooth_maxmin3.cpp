@@ -115,7 +115,8 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
     ++stats.passes;
     poor.clear();
     for (int t = 0; t < nt; ++t)
-      if (tet_of(mesh, t)[0] >= 0 && (tq[t] < o.q_below || ta[t] < o.angle_below))
+      if (tet_of(mesh, t)[0] >= 0 && (tq[t] < o.q_below || ta[t] < o.angle_below) &&
+          (!o.only_tets || (*o.only_tets)[t]))
         poor.push_back({objective_of(t), t});
     std::sort(poor.begin(), poor.end());
     std::fill(done.begin(), done.end(), 0);

@@ -12,6 +12,8 @@
 // with vclass.dim < 3 never move; connectivity never changes. Serial and in a fixed order: the
 // result depends on the input only.
 #pragma once
+#include <vector>
+
 #include "core/mesh/tet_mesh.h"
 #include "core/quality/time_step_guard.h"
 
@@ -22,6 +24,8 @@ struct MaxMinOptions {
   // angle_below (degrees).
   double q_below = 0.5;
   double angle_below = 30;
+  // If not null, a flag per tet: only flagged tets count as poor (a local repair).
+  const std::vector<char>* only_tets = nullptr;
   // The dihedral angles enter the objective as angle (degrees) / angle_scale; <= 0: Q only.
   double angle_scale = 60;
   // The guards, with floor_eff = max(floor, the mesh's global minimum at the start): moving a

@@ -8,6 +8,7 @@
 
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/vertex_tets.h"
+#include "core/quality/quality.h"
 #include "core/quality/quality_stats.h"
 #include "tests/swap/swap_test_util.h"
 
@@ -57,6 +58,32 @@ TEST(SmoothMaxMin3, RaisesTheMinimumOfABadlyPlacedVertexsStarToNearTheOptimum) {
   EXPECT_EQ(m.tets, start.tets);
   for (int v = 1; v < m.nb_vertices(); ++v)
     for (int k = 0; k < 3; ++k) EXPECT_EQ(m.point(v)[k], start.point(v)[k]);
+}
+
+double tet_quality_of(const TetMesh& m, int t) {
+  const int* v = &m.tets[4 * t];
+  return tet_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]), Measure::kQ);
+}
+
+// only_tets: a poor tet outside the flagged ones does not bring its vertices in; flagged, it does.
+TEST(SmoothMaxMin3, OnlyTheFlaggedTetsCountAsPoor) {
+  const TetMesh start = octahedron_star(0.6, 0.2, -0.15);
+  std::vector<char> none(start.nb_tets(), 0), one(start.nb_tets(), 0);
+  // Flag the star's worst tet.
+  int worst = 0;
+  for (int t = 1; t < start.nb_tets(); ++t)
+    if (tet_quality_of(start, t) < tet_quality_of(start, worst)) worst = t;
+  one[worst] = 1;
+  MaxMinOptions o;
+  TetMesh m = start;
+  o.only_tets = &none;
+  EXPECT_EQ(smooth_maxmin3(m, o).nb_tried, 0);
+  EXPECT_EQ(m.xyz, start.xyz);
+  ASSERT_LT(global_min_quality(start, Measure::kQ), o.q_below);
+  o.only_tets = &one;
+  const MaxMinStats s = smooth_maxmin3(m, o);
+  EXPECT_EQ(s.nb_moved, 1);
+  EXPECT_GT(global_min_quality(m, Measure::kQ), global_min_quality(start, Measure::kQ));
 }
 
 TEST(SmoothMaxMin3, NeverMovesABoundaryVertexAndLeavesAGoodStarAlone) {
