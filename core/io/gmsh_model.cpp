@@ -15,6 +15,7 @@
 #include "core/geometry/predicates.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/place_mid_edge_nodes.h"
+#include "core/io/tag_index.h"
 #include "core/mesh/keep_loose_triangles.h"
 #include "core/mesh/constrain_kept_cell_faces.h"
 #include "core/mesh/build_adjacency.h"
@@ -192,15 +193,18 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     // Order-2 simplices (line3, tri6, tet10): their corners make the mesh we optimize; their
     // mid-edge nodes are kept aside (info.high_order) and re-placed by the writers.
     bool order2 = false;
-    std::unordered_set<std::size_t> mid_nodes, corner_nodes;
     for (const auto& e : elements)
-      for (std::size_t k = 0; k < e.types.size(); ++k) {
-        const int nn = nodes_per_element(e.types[k]), nc = corners_of(e.types[k]);
-        const bool o2 = linear_type(e.types[k]) != e.types[k];
-        order2 |= o2;
-        for (std::size_t i = 0; i < e.enodes[k].size(); ++i)
-          (o2 && static_cast<int>(i % nn) >= nc ? mid_nodes : corner_nodes).insert(e.enodes[k][i]);
-      }
+      for (int type : e.types) order2 |= linear_type(type) != type;
+    std::unordered_set<std::size_t> mid_nodes, corner_nodes;
+    if (order2)
+      for (const auto& e : elements)
+        for (std::size_t k = 0; k < e.types.size(); ++k) {
+          const int nn = nodes_per_element(e.types[k]), nc = corners_of(e.types[k]);
+          const bool o2 = linear_type(e.types[k]) != e.types[k];
+          for (std::size_t i = 0; i < e.enodes[k].size(); ++i)
+            (o2 && static_cast<int>(i % nn) >= nc ? mid_nodes : corner_nodes)
+                .insert(e.enodes[k][i]);
+        }
     if (order2 && dim == 2)
       throw InputError(what +
                        ": order-2 triangles in a 2D mesh are not supported (3D order-2 meshes "
@@ -217,8 +221,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       all_index.reserve(all_tags.size() * 2);
       for (std::size_t i = 0; i < all_tags.size(); ++i) all_index.emplace(all_tags[i], i);
     }
-    std::unordered_map<std::size_t, int> index;
-    index.reserve(all_tags.size() * 2);
+    std::size_t max_tag = 0;
+    for (std::size_t t : all_tags) max_tag = std::max(max_tag, t);
+    TagIndex index(max_tag, all_tags.size());
     std::vector<double> xyz;
     std::vector<VertexClass> vclass;
     for (std::size_t i = 0; i < all_tags.size(); ++i) {
@@ -227,7 +232,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           throw InputError(what + ": node " + std::to_string(all_tags[i]) +
                            " has a NaN or infinite coordinate");
       if (order2 && mid_nodes.count(all_tags[i])) continue;
-      if (!index.emplace(all_tags[i], static_cast<int>(node_tags.size())).second)
+      if (!index.add(all_tags[i], static_cast<int>(node_tags.size())))
         throw InputError(what + ": node tag " + std::to_string(all_tags[i]) + " is duplicated");
       node_tags.push_back(all_tags[i]);
       xyz.insert(xyz.end(), &all_xyz[3 * i], &all_xyz[3 * i] + 3);
@@ -238,18 +243,18 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       std::vector<double> c, p;
       gmsh::model::mesh::getNodes(tags, c, p, d, t, false, false);
       for (std::size_t tag : tags) {
-        auto it = index.find(tag);
-        if (it == index.end()) continue;
-        vclass[it->second].dim = static_cast<std::int8_t>(d);
-        vclass[it->second].entity = t;
+        const int v = index.find(tag);
+        if (v < 0) continue;
+        vclass[v].dim = static_cast<std::int8_t>(d);
+        vclass[v].entity = t;
       }
     }
     auto vid = [&](std::size_t tag) {
-      auto it = index.find(tag);
-      if (it == index.end())
+      const int v = index.find(tag);
+      if (v < 0)
         throw InputError(what + ": an element references node " + std::to_string(tag) +
                          ", which does not exist");
-      return it->second;
+      return v;
     };
     // The input's mid-edge nodes, once per edge.
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid_of_edge;
@@ -373,18 +378,20 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       m.model = std::move(info);
       keep_loose_triangles(m);
       long bad = 0;
-      std::size_t first_bad = 0;
-      for (int t = 0; t < m.nb_tets(); ++t) {
-        const int* v = &m.tets[4 * t];
+      int first_bad = m.nb_tets();
+      const int nt = m.nb_tets();
+#pragma omp parallel for schedule(static, 1024) reduction(+ : bad) reduction(min : first_bad)
+      for (int t = 0; t < nt; ++t) {
+        const int* v = &m.tets[4 * static_cast<std::size_t>(t)];
         if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0) {
-          if (!bad) first_bad = m.tet_tags[t];
+          first_bad = std::min(first_bad, t);
           ++bad;
         }
       }
       if (bad)
         throw InputError(what + ": " + std::to_string(bad) +
                          " tetrahedra are inverted or flat (first: element " +
-                         std::to_string(first_bad) + ")");
+                         std::to_string(m.tet_tags[first_bad]) + ")");
       build_adjacency(m);
       constrain_kept_cell_faces(m);
       const MeshCheck c = check_mesh(m);
