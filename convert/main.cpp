@@ -19,8 +19,8 @@ int main(int argc, char** argv) {
   // (arrays of 40-400 MB made and freed every iteration) a run spent ~58 s of CPU in page faults.
   // `cvtmesh -v optimize` of the 9.15M-tet cube_sphere Init (docs/benchmarks.md, stop 28), with
   // the same settings through GLIBC_TUNABLES (mmap_max=0, trim threshold 64 GB): 530.7 -> 482.1 s
-  // in optimize, system time 57.7 -> 23.5 s, peak RSS 7.67 GB. At ~1M tets (c1m) the same time
-  // (glibc's own threshold adapts below 32 MB) and peak RSS 823 -> 849 MB.
+  // in optimize, system time 57.7 -> 23.5 s, peak RSS 7.67 GB (6.55 GB without). At ~1M tets
+  // (c1m) the same time (glibc's own threshold adapts below 32 MB) and peak RSS 823 -> 849 MB.
   mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());  // 2 GB free at the top
   CLI::App app{"cvtmesh " CVTMESH_VERSION
