@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/io/tag_index.h"
 #include "core/mesh/face_buckets.h"
 
 namespace cvtmesh {
@@ -24,33 +25,25 @@ struct Facet {
   std::array<std::size_t, 3> nodes{};
 };
 
-// Dense ids for node tags (Gmsh's are usually 1..N: a table then, a hash map otherwise).
+// Dense ids for node tags, given in order of first appearance (tag_index.h: a table when the
+// tags are dense, a hash map otherwise).
 class DenseIds {
  public:
-  explicit DenseIds(std::size_t max_tag, std::size_t nb_refs) {
-    if (max_tag <= 4 * nb_refs + 1024) table_.assign(max_tag + 1, kNone);
-  }
+  DenseIds(std::size_t max_tag, std::size_t nb_refs) : index_(max_tag, nb_refs) {}
   std::uint32_t get_or_add(std::size_t tag) {
-    if (!table_.empty()) {
-      std::uint32_t& id = table_[tag];
-      if (id == kNone) id = next_++;
-      return id;
-    }
-    auto [it, fresh] = map_.emplace(tag, next_);
-    if (fresh) ++next_;
-    return it->second;
+    int id = index_.find(tag);
+    if (id < 0) index_.add(tag, id = static_cast<int>(next_++));
+    return static_cast<std::uint32_t>(id);
   }
   std::uint32_t find(std::size_t tag) const {
-    if (!table_.empty()) return tag < table_.size() ? table_[tag] : kNone;
-    auto it = map_.find(tag);
-    return it == map_.end() ? kNone : it->second;
+    const int id = index_.find(tag);
+    return id < 0 ? kNone : static_cast<std::uint32_t>(id);
   }
   std::uint32_t size() const { return next_; }
   static constexpr std::uint32_t kNone = 0xffffffffu;
 
  private:
-  std::vector<std::uint32_t> table_;
-  std::unordered_map<std::size_t, std::uint32_t> map_;
+  TagIndex index_;
   std::uint32_t next_ = 0;
 };
 
