@@ -51,6 +51,9 @@ struct Comparison {
     WriteOptions w;
     w.fields = quality_fields(d);
     w.policy.force = true;  // --save refreshes its own directory
+    // Binary: every column exactly as it was measured (its runs are verified in full precision;
+    // a CVDT column may hold slivers that 16 printed digits would flatten: Gmsh's t13).
+    w.binary = true;
     write_mesh(d, co.save_dir + "/" + name + ".msh", w);
   }
 
@@ -79,6 +82,9 @@ struct Comparison {
     // The paper's columns show each method's own result (CVDT alone is worse than Init at its
     // worst tet, the paper's point): no never-worse fallback here.
     o.never_worse = false;
+    // Verified in full precision and saved in binary (save): without the never-worse fallback a
+    // method's slivers would otherwise stop the comparison.
+    o.output_digits = 0;
     const OptimizeResult r = optimize(out, o);
     const int its = iterations_before > 0 ? iterations_before : r.iterations;
     add(out, label, file, its, seconds_before + r.seconds);
@@ -150,8 +156,14 @@ void register_compare(CLI::App& app) {
          if (co->baselines) {
            MeshData g = init;
            auto t = std::chrono::steady_clock::now();
-           gmsh_optimize_mesh(g, "", 1);
-           cmp.add(g, "Gmsh optimize", "gmsh_optimize", 1, seconds_since(t));
+           try {
+             gmsh_optimize_mesh(g, "", 1);
+             cmp.add(g, "Gmsh optimize", "gmsh_optimize", 1, seconds_since(t));
+           } catch (const InvariantError& e) {
+             // Gmsh 4.8's optimizer moves boundary vertices of some discrete surfaces (MMG's
+             // torus): reported, the other columns kept.
+             info() << "cvtmesh: Gmsh optimize baseline left out: " << e.what() << "\n";
+           }
            MeshData tg = init;
            t = std::chrono::steady_clock::now();
            try {

@@ -41,22 +41,33 @@ double mean_edge_length(const TetMesh& m) {
 }  // namespace
 
 void cgal_remesh(TetMesh& m, const CgalRemeshOptions& o) {
+  // The vertices of tets only, renumbered: a point of no cell (a node of the model's curves or
+  // points, or of a surface bounding no volume: Gmsh's t2, t3, t5, t19) has no incident cell in
+  // CGAL's triangulation, and the remeshing then crashes walking around it. The result is matched
+  // back by coordinates (classify_peer_vertices).
+  std::vector<int> local(static_cast<std::size_t>(m.nb_vertices()), -1);
   std::vector<Tr::Point> points;
-  points.reserve(m.nb_vertices());
-  for (int v = 0; v < m.nb_vertices(); ++v)
-    points.emplace_back(m.xyz[3 * v], m.xyz[3 * v + 1], m.xyz[3 * v + 2]);
   std::vector<std::array<int, 5>> cells;
+  auto local_id = [&](int v) {
+    if (local[v] < 0) {
+      local[v] = static_cast<int>(points.size());
+      points.emplace_back(m.xyz[3 * v], m.xyz[3 * v + 1], m.xyz[3 * v + 2]);
+    }
+    return local[v];
+  };
   for (int t = 0; t < m.nb_tets(); ++t) {
     if (m.tets[4 * t] < 0) continue;
     if (m.tet_region[t] <= 0)
       throw InvariantError("CGAL baseline: region tag " + std::to_string(m.tet_region[t]) +
                            " (CGAL's subdomain 0 is the outside)");
-    cells.push_back(
-        {m.tets[4 * t], m.tets[4 * t + 1], m.tets[4 * t + 2], m.tets[4 * t + 3], m.tet_region[t]});
+    cells.push_back({local_id(m.tets[4 * t]), local_id(m.tets[4 * t + 1]),
+                     local_id(m.tets[4 * t + 2]), local_id(m.tets[4 * t + 3]), m.tet_region[t]});
   }
   std::map<std::array<int, 3>, Tr::Cell::Surface_patch_index> border;
   for (int f = 0; f < m.nb_tris(); ++f) {
-    std::array<int, 3> k = {m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]};
+    std::array<int, 3> k = {local[m.tris[3 * f]], local[m.tris[3 * f + 1]],
+                            local[m.tris[3 * f + 2]]};
+    if (*std::min_element(k.begin(), k.end()) < 0) continue;  // not on a tet
     std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
     border[k] = m.tri_surface[f];
   }

@@ -4,31 +4,69 @@
 #include <cmath>
 #include <limits>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "core/geometry/vec3.h"
 
 namespace cvtmesh {
 namespace {
 
-// The stars of the vertices v with wanted(v), by counting sort over the live tets.
+// Below this many tet slots the stars are built in one pass (the threads' arrays of #V counts
+// would cost more than they save).
+constexpr int kParallelStarTets = 200000;
+
+// The stars of the vertices v with wanted(v), by counting sort over the live tets. Large meshes
+// in parallel: each thread counts and then places the tets of one contiguous block of tet ids,
+// its places within each vertex's star after those of the blocks before it -- the same arrays as
+// one pass in tet order, for any number of threads (this runs once per Lloyd iteration and per
+// smoothing pass).
 template <class Wanted>
 VertexTets build_stars(const TetMesh& mesh, Wanted wanted) {
   const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
   VertexTets vt;
   vt.offset.assign(static_cast<std::size_t>(nv) + 1, 0);
-  for (int t = 0; t < nt; ++t) {
-    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
-    if (tv[0] < 0) continue;
-    for (int k = 0; k < 4; ++k)
-      if (wanted(tv[k])) ++vt.offset[tv[k] + 1];
+#ifdef _OPENMP
+  const int nb_blocks = nt >= kParallelStarTets ? std::min(omp_get_max_threads(), 8) : 1;
+#else
+  const int nb_blocks = 1;
+#endif
+  // count[b][v]: the tets of block b around v, then where block b's first one goes.
+  std::vector<std::vector<int>> count(static_cast<std::size_t>(nb_blocks));
+  auto block_begin = [&](int b) {
+    return static_cast<int>(static_cast<long long>(nt) * b / nb_blocks);
+  };
+#pragma omp parallel for schedule(static, 1) num_threads(nb_blocks) if (nb_blocks > 1)
+  for (int b = 0; b < nb_blocks; ++b) {
+    std::vector<int>& c = count[b];
+    c.assign(static_cast<std::size_t>(nv), 0);
+    for (int t = block_begin(b); t < block_begin(b + 1); ++t) {
+      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      if (tv[0] < 0) continue;
+      for (int k = 0; k < 4; ++k)
+        if (wanted(tv[k])) ++c[tv[k]];
+    }
   }
-  for (int v = 0; v < nv; ++v) vt.offset[v + 1] += vt.offset[v];
+  for (int v = 0; v < nv; ++v) {
+    int at = vt.offset[v];
+    for (int b = 0; b < nb_blocks; ++b) {
+      const int n = count[b][v];
+      count[b][v] = at;
+      at += n;
+    }
+    vt.offset[v + 1] = at;
+  }
   vt.tets.resize(static_cast<std::size_t>(vt.offset[nv]));
-  std::vector<int> fill(vt.offset.begin(), vt.offset.end() - 1);
-  for (int t = 0; t < nt; ++t) {
-    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
-    if (tv[0] < 0) continue;
-    for (int k = 0; k < 4; ++k)
-      if (wanted(tv[k])) vt.tets[fill[tv[k]]++] = t;
+#pragma omp parallel for schedule(static, 1) num_threads(nb_blocks) if (nb_blocks > 1)
+  for (int b = 0; b < nb_blocks; ++b) {
+    std::vector<int>& fill = count[b];
+    for (int t = block_begin(b); t < block_begin(b + 1); ++t) {
+      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      if (tv[0] < 0) continue;
+      for (int k = 0; k < 4; ++k)
+        if (wanted(tv[k])) vt.tets[fill[tv[k]]++] = t;
+    }
   }
   return vt;
 }

@@ -53,7 +53,8 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
       break;
     }
   }
-  stats.after = quality_stats(mesh, "CombOpt");
+  // The last iteration's figures are the mesh's (nothing changed it since).
+  stats.after = stats.iterations > 0 ? prev : quality_stats(mesh, "CombOpt");
   return stats;
 }
 

@@ -107,11 +107,19 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
           if (guard)
             for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
               old_dt = std::min(old_dt, tdt[*t]);
-          if (guard) {
+          // The star's nodal terms before the move, taken when a trial first passes the Q test
+          // (most trials that fail it never need them).
+          bool have_before = false;
+          auto take_before = [&] {
+            if (have_before) return;
+            const double trial[3] = {P[0], P[1], P[2]};
+            for (int k = 0; k < 3; ++k) P[k] = orig[k];
             before.clear();
             for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
               before.add(mesh, &mesh.tets[4 * static_cast<std::size_t>(*t)], -1);
-          }
+            for (int k = 0; k < 3; ++k) P[k] = trial[k];
+            have_before = true;
+          };
           bool moved = false;
           for (int attempt = 0; attempt < (options.half_step ? 2 : 1) && !moved; ++attempt) {
             const double s = attempt == 0 ? 1.0 : 0.5;
@@ -119,6 +127,7 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
             new_q.clear();
             bool ok = true;
             double new_min = std::numeric_limits<double>::infinity();
+            // Refused at the first tet below the star's old minimum (or not positive).
             for (const int* t = star.begin_of(v); t != star.end_of(v) && ok; ++t) {
               const int* tv = &mesh.tets[4 * static_cast<std::size_t>(*t)];
               if (orient3d(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]),
@@ -128,8 +137,10 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
               }
               new_q.push_back(quality_of(mesh, *t, options.measure));
               new_min = std::min(new_min, new_q.back());
+              if (new_min < old_min) break;
             }
             if (ok && new_min >= old_min && guard) {
+              take_before();
               new_dt.clear();
               double new_min_dt = std::numeric_limits<double>::infinity();
               for (const int* t = star.begin_of(v); t != star.end_of(v); ++t) {

@@ -31,8 +31,12 @@ double min_quality(const TetMesh& mesh, const std::vector<int>& tet_ids, Measure
   return q;
 }
 
+double accept_floor(double old_min, const SwapCriterion& criterion) {
+  return old_min + criterion.min_gain * std::fabs(old_min);
+}
+
 bool accept_swap(double old_min, double new_min, const SwapCriterion& criterion) {
-  return new_min > old_min + criterion.min_gain * std::fabs(old_min);
+  return new_min > accept_floor(old_min, criterion);
 }
 
 bool accept_swap(const TetMesh& mesh, const SwapPlan& plan, const SwapCriterion& criterion) {

@@ -26,7 +26,10 @@ double min_quality(const TetMesh& mesh, const std::vector<int>& tet_ids, Measure
 // True if plan is valid (status kOk) and its new tets' minimum quality beats the old ones'.
 // Uses plan.old_min/new_min when they were computed in the criterion's measure.
 bool accept_swap(const TetMesh& mesh, const SwapPlan& plan, const SwapCriterion& criterion);
-// The same decision from the two minima.
+// The same decision from the two minima: new_min above accept_floor(old_min, criterion).
 bool accept_swap(double old_min, double new_min, const SwapCriterion& criterion);
+// The value a plan's new minimum must exceed to be accepted (old_min + min_gain |old_min|): a
+// planner may skip every candidate at or below it.
+double accept_floor(double old_min, const SwapCriterion& criterion);
 
 }  // namespace cvtmesh

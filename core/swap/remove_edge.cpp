@@ -23,7 +23,7 @@ SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrain
 }
 
 SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrained,
-                          const EdgeRing& r, Measure measure) {
+                          const EdgeRing& r, Measure measure, double floor) {
   SwapPlan plan;
   plan.old_tets = r.tets;
   if (r.tets.empty()) throw std::invalid_argument("remove_edge: empty edge ring");
@@ -51,7 +51,9 @@ SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrain
   // Quality of the two tets standing on each triangle of the ring polygon, evaluated lazily;
   // -inf if either is not positively oriented. Orientation is decided exactly, quality only
   // ranks. Branch and bound: a triangulation is abandoned as soon as one of its triangles is no
-  // better than the best triangulation found so far (the result is the exact max-min).
+  // better than the best triangulation found so far, or than the floor (the result is the exact
+  // max-min). A triangle whose first tet is already no better than the bound keeps that tet's
+  // quality only: every triangulation holding it is abandoned (the bound only rises).
   constexpr double kInvalid = -std::numeric_limits<double>::infinity();
   const double kUnknown = std::numeric_limits<double>::quiet_NaN();
   const PolygonTriangulations& table = polygon_triangulations(n);
@@ -59,20 +61,22 @@ SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrain
   const double* Q = mesh.point(r.q);
   double tri_q[35];
   std::fill(tri_q, tri_q + table.triangles.size(), kUnknown);
+  int best = -1;
+  double best_q = std::max(kInvalid, floor);
   auto triangle_quality = [&](int i) {
     if (tri_q[i] == tri_q[i]) return tri_q[i];
     const auto& tr = table.triangles[i];
     const double* A = mesh.point(r.ring[tr[0]]);
     const double* B = mesh.point(r.ring[tr[1]]);
     const double* C = mesh.point(r.ring[tr[2]]);
-    if (orient3d(A, B, C, Q) <= 0 || orient3d(A, C, B, P) <= 0)
+    if (orient3d(A, B, C, Q) <= 0 || orient3d(A, C, B, P) <= 0) {
       tri_q[i] = kInvalid;
-    else
-      tri_q[i] = std::min(tet_quality(A, B, C, Q, measure), tet_quality(A, C, B, P, measure));
+    } else {
+      tri_q[i] = tet_quality(A, B, C, Q, measure);
+      if (tri_q[i] > best_q) tri_q[i] = std::min(tri_q[i], tet_quality(A, C, B, P, measure));
+    }
     return tri_q[i];
   };
-  int best = -1;
-  double best_q = kInvalid;
   for (std::size_t k = 0; k < table.triangulations.size(); ++k) {
     double m = std::numeric_limits<double>::infinity();
     for (int i : table.triangulations[k]) {
@@ -85,7 +89,7 @@ SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrain
     }
   }
   if (best < 0) {
-    plan.status = SwapStatus::kNotConvex;
+    plan.status = floor > kInvalid ? SwapStatus::kRejected : SwapStatus::kNotConvex;
     return plan;
   }
   for (int i : table.triangulations[best]) {

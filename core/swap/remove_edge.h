@@ -4,6 +4,8 @@
 // table (polygon_triangulations.h) whose new tets have the largest minimum quality (max-min).
 // n = 3 is the 3-2 flip (flip32.h).
 #pragma once
+
+#include <limits>
 #include "core/mesh/tet_mesh.h"
 #include "core/quality/quality.h"
 #include "core/swap/accept_swap.h"
@@ -24,9 +26,13 @@ SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrain
                           Measure measure = Measure::kQ, int max_ring = 7);
 
 // The same from a ring already walked (edge_ring.h): status kBoundary or kRingSize unless
-// ring.closed.
+// ring.closed. With a `floor` (a caller that accepts no plan whose new minimum is at or below
+// it, e.g. the ring's old minimum): only the triangulations whose minimum is above it are
+// searched, status kRejected when there is none; the same plan otherwise (the max-min
+// triangulation, exactly), for fewer quality evaluations.
 SwapPlan plan_remove_edge(const TetMesh& mesh, const ConstrainedFaces& constrained,
-                          const EdgeRing& ring, Measure measure = Measure::kQ);
+                          const EdgeRing& ring, Measure measure = Measure::kQ,
+                          double floor = -std::numeric_limits<double>::infinity());
 
 // Plans the removal (choosing the triangulation in the criterion's measure, kQ without one) and
 // commits it when valid and accepted by `criterion` if given (status kRejected otherwise).

@@ -172,7 +172,17 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       if (!plan.quality_known || plan.measure != measure) {
         plan.old_min = std::numeric_limits<double>::infinity();
         for (int o : plan.old_tets) plan.old_min = std::min(plan.old_min, q[o]);
-        plan.new_min = min_quality(mesh, plan.new_tets, measure);
+        // Without the sum criterion a plan is accepted only above accept_floor(old_min): the
+        // new tets' qualities stop at the first one at or below it (refused either way).
+        const double floor = options.sum_criterion ? -std::numeric_limits<double>::infinity()
+                                                   : accept_floor(plan.old_min, criterion);
+        plan.new_min = std::numeric_limits<double>::infinity();
+        for (const auto& n : plan.new_tets) {
+          plan.new_min =
+              std::min(plan.new_min, tet_quality(mesh.point(n[0]), mesh.point(n[1]),
+                                                 mesh.point(n[2]), mesh.point(n[3]), measure));
+          if (plan.new_min <= floor) break;
+        }
         plan.quality_known = true;
         plan.measure = measure;
       }
@@ -224,7 +234,15 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
           continue;
         const EdgeRing ring = edge_ring(mesh, t, e, options.max_ring);
         if (!ring.closed) continue;
-        if (!consider(plan_remove_edge(mesh, constrained, ring, measure)))
+        // The planner searches only the triangulations the criterion could accept
+        // (1M tets, `cvtmesh optimize`: the polish's flips 1.3 -> 1.0 s an iteration).
+        double floor = -std::numeric_limits<double>::infinity();
+        if (!options.sum_criterion) {
+          double old_min = std::numeric_limits<double>::infinity();
+          for (int o : ring.tets) old_min = std::min(old_min, q[o]);
+          floor = accept_floor(old_min, criterion);
+        }
+        if (!consider(plan_remove_edge(mesh, constrained, ring, measure, floor)))
           for (int r : ring.tets) {
             const int le = local_edge(&mesh.tets[4 * static_cast<std::size_t>(r)], a, b);
             if (le >= 0) ev.marks.push_back({r, static_cast<std::uint16_t>(1u << le)});

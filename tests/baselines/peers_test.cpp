@@ -38,6 +38,24 @@ TEST(Peers, CgalKeepsTheBoundaryAndImprovesTheInit) {
   EXPECT_GT(quality_stats(m, "").q_min, quality_stats(init.tet, "").q_min);
 }
 
+// A node of no tet (Gmsh keeps the nodes of a model's points, curves and loose surfaces: its
+// tutorials t2, t3, t5 and t19) is left out of CGAL's triangulation: it has no incident cell
+// there, and CGAL's remeshing crashed walking around it (compare died with SIGSEGV).
+TEST(Peers, CgalRemeshingIgnoresNodesOfNoTet) {
+  MeshData init = testing::cube_sphere(0.2, 0.15);
+  TetMesh& in = init.tet;
+  const int v = in.nb_vertices();
+  in.xyz.insert(in.xyz.end(), {2.0, 2.0, 2.0});
+  in.vclass.push_back(in.vclass[0]);
+  if (!in.node_tags.empty()) in.node_tags.push_back(in.node_tags.back() + 1000);
+  ASSERT_EQ(in.nb_vertices(), v + 1);
+  TetMesh m = in;
+  cgal_remesh(m);
+  EXPECT_TRUE(check_mesh(m).ok);
+  EXPECT_NO_THROW(verify_peer(in, m, "CGAL"));
+  EXPECT_GT(quality_stats(m, "").q_min, quality_stats(in, "").q_min);
+}
+
 // Mesh_3 makes a new mesh of the same domain: valid, one region, and its volume that of the input
 // to within the surface approximation (facet_distance = size / 10).
 TEST(Peers, CgalMesh3MeshesTheSameDomain) {

@@ -128,6 +128,35 @@ TEST_P(RemoveEdgeRing, PicksTheMaxMinTriangulation) {
   }
 }
 
+// With a floor the planner gives the same plan as without one while the max-min triangulation
+// is above the floor, and refuses (kRejected) once the floor reaches its minimum.
+TEST_P(RemoveEdgeRing, AFloorChangesNothingBelowTheBestAndRefusesFromIt) {
+  const int n = GetParam();
+  TetMesh m = ring_mesh(n);
+  for (int i = 0; i < n; ++i) {
+    m.point(2 + i)[0] *= 1.0 + 0.11 * i;
+    m.point(2 + i)[2] = 0.05 * (i % 3);
+  }
+  ASSERT_TRUE(check_mesh(m).ok);
+  const ConstrainedFaces cf = constrained_faces(m);
+  const EdgeRing r = edge_ring(m, 0, local_edge(m, 0, 0, 1), 7);
+  ASSERT_TRUE(r.closed);
+  for (Measure measure : {Measure::kQ, Measure::kMinAngle}) {
+    const SwapPlan free = plan_remove_edge(m, cf, r, measure);
+    ASSERT_EQ(free.status, SwapStatus::kOk);
+    for (double f : {free.new_min - 1.0, 0.5 * free.new_min, std::nextafter(free.new_min, -1.0)}) {
+      const SwapPlan floored = plan_remove_edge(m, cf, r, measure, f);
+      ASSERT_EQ(floored.status, SwapStatus::kOk) << "floor " << f;
+      EXPECT_EQ(floored.new_tets, free.new_tets);
+      EXPECT_EQ(floored.new_min, free.new_min);
+      EXPECT_EQ(floored.old_min, free.old_min);
+    }
+    for (double f : {free.new_min, free.new_min + 1e-3})
+      EXPECT_EQ(plan_remove_edge(m, cf, r, measure, f).status, SwapStatus::kRejected)
+          << "floor " << f;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(RingSizes, RemoveEdgeRing, ::testing::Values(3, 4, 5, 6, 7));
 
 TEST(RemoveEdge, NeverRemovesAConstrainedFaceAndSkipsBoundaryEdges) {
