@@ -19,6 +19,7 @@
 #include "core/swap/edge_ring.h"
 #include "core/swap/flip23.h"
 #include "core/swap/insert_vertex.h"
+#include "core/swap/plan_adds_existing_simplex.h"
 #include "core/swap/remove_edge.h"
 #include "core/swap/swap_slivers.h"
 
@@ -243,7 +244,7 @@ Candidate try_flip(const TetMesh& m, const ConstrainedFaces& constrained, int t,
   Candidate c;
   SwapPlan plan = e < 6 ? plan_remove_edge(m, constrained, t, e, Measure::kQ, 7)
                         : plan_flip23(m, constrained, t, e - 6);
-  if (plan.status != SwapStatus::kOk) return c;
+  if (plan.status != SwapStatus::kOk || plan_adds_existing_simplex(m, plan)) return c;
   Score old_min;
   for (int x : plan.old_tets) lower(old_min, tet_score(m, tet_of(m, x)));
   c.mesh = m;

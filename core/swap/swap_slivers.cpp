@@ -20,6 +20,7 @@
 #include "core/swap/constrained_faces.h"
 #include "core/swap/edge_ring.h"
 #include "core/swap/flip23.h"
+#include "core/swap/plan_adds_existing_simplex.h"
 #include "core/swap/remove_edge.h"
 #include "core/util/error.h"
 
@@ -218,6 +219,9 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
                           &mesh.tets[4 * static_cast<std::size_t>(o)] + 4);
         if (!nodal_change(plan, ev.change).allows(options.dt_guard, dt_steps)) return false;
       }
+      // Topologically valid too (a folded boundary can make positive tets that would repeat an
+      // edge or a face of the mesh): checked only for the plans accepted so far.
+      if (plan_adds_existing_simplex(mesh, plan)) return false;
       if (options.sum_criterion ? !ev.have_best || gain > ev.best_gain
                                 : !ev.have_best || plan.new_min > ev.best.new_min) {
         ev.best = std::move(plan);
