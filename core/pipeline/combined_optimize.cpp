@@ -44,9 +44,13 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
     if (progress) progress(it, now);
     const double avg_tolerance =
         options.average_tolerance >= 0 ? options.average_tolerance : options.tolerance;
-    const bool improved = now.q_avg > prev.q_avg + avg_tolerance ||
-                          now.q_min > prev.q_min + options.tolerance ||
-                          now.min_angle > prev.min_angle + options.angle_tolerance;
+    const bool targets_met = (options.min_target > 0 || options.angle_target > 0) &&
+                             now.q_min >= options.min_target &&
+                             now.min_angle >= options.angle_target;
+    const bool improved =
+        now.q_avg > prev.q_avg + avg_tolerance ||
+        (!targets_met && (now.q_min > prev.q_min + options.tolerance ||
+                          now.min_angle > prev.min_angle + options.angle_tolerance));
     prev = now;
     if (!improved) {
       stats.converged = true;

@@ -52,6 +52,21 @@ TEST(VoronoiCell3, DualDecompositionMatchesClippingForInteriorCells) {
     EXPECT_NEAR(std::sqrt(norm2(a - b)), 0.0, 1e-9) << v;
   }
   EXPECT_GT(compared, m.nb_vertices() / 10);
+  // Under a constant density the pieces' energies (second moments about the vertex) are exact
+  // too.
+  const CellMesh cm1 = prepare_cell_mesh(m, nullptr);
+  int compared1 = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    CellIntegrals dual;
+    if (!dual_voronoi_cell(m, cm1, v, dual)) continue;
+    const CellIntegrals clip = restricted_voronoi_cell(m, cm1, v, ws, nullptr);
+    ++compared1;
+    EXPECT_NEAR(dual.volume, clip.volume, 1e-9 * clip.volume) << v;
+    EXPECT_NEAR(dual.mass, clip.mass, 1e-9 * clip.mass) << v;
+    EXPECT_NEAR(dual.energy, clip.energy, 1e-9 * clip.energy) << v;
+    EXPECT_GT(dual.energy, 0) << v;
+  }
+  EXPECT_GT(compared1, m.nb_vertices() / 10);
 }
 
 }  // namespace

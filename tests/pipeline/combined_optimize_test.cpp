@@ -56,6 +56,38 @@ TEST(CombinedOptimize, RaisesAverageAndMinimumQualityOfTheUnoptimizedCubeSphere)
   EXPECT_NO_THROW(verify_optimized(start, m));  // the pipeline's own end-of-run invariants
 }
 
+TEST(CombinedOptimize, ReachedTargetsLeaveTheAverageAloneToContinue) {
+  // The average never counts here (tolerance 1): without targets the iterations go on while
+  // the minimum or the minimum dihedral angle rises; with targets both reached after the first
+  // iteration, that iteration is the last; with targets out of reach, nothing changes.
+  const TetMesh start = unoptimized_cube_sphere();
+  CombinedOptions o;
+  o.average_tolerance = 1;
+  TetMesh free_run = start;
+  const CombinedStats s0 = combined_optimize(free_run, o);
+  ASSERT_GT(s0.iterations, 1);  // else the targets below could not shorten anything
+  CombinedOptions reached = o;
+  reached.min_target = 1e-9;
+  reached.angle_target = 1e-9;
+  TetMesh m = start;
+  std::vector<QualityStats> its;
+  const CombinedStats s1 =
+      combined_optimize(m, reached, [&](int, const QualityStats& q) { its.push_back(q); });
+  ASSERT_EQ(its.size(), 1u);
+  EXPECT_GE(its[0].q_min, reached.min_target);
+  EXPECT_GE(its[0].min_angle, reached.angle_target);
+  EXPECT_EQ(s1.iterations, 1);
+  EXPECT_TRUE(s1.converged);
+  CombinedOptions unreachable = o;
+  unreachable.min_target = 2;
+  unreachable.angle_target = 200;
+  TetMesh m2 = start;
+  const CombinedStats s2 = combined_optimize(m2, unreachable);
+  EXPECT_EQ(s2.iterations, s0.iterations);
+  EXPECT_EQ(m2.xyz, free_run.xyz);
+  EXPECT_EQ(m2.tets, free_run.tets);
+}
+
 TEST(CombinedOptimize, ZeroIterationsLeavesTheMeshAloneAndBadOptionsThrow) {
   TetMesh m = testing::cube6();
   const TetMesh start = m;
