@@ -44,9 +44,9 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
     if (progress) progress(it, now);
     const double avg_tolerance =
         options.average_tolerance >= 0 ? options.average_tolerance : options.tolerance;
-    const bool targets_met = (options.min_target > 0 || options.angle_target > 0) &&
-                             now.q_min >= options.min_target &&
-                             now.min_angle >= options.angle_target;
+    const bool targets_met = options.stop_at_maxmin_targets &&
+                             now.q_min >= options.maxmin_options.q_below &&
+                             now.min_angle >= options.maxmin_options.angle_below;
     const bool improved =
         now.q_avg > prev.q_avg + avg_tolerance ||
         (!targets_met && (now.q_min > prev.q_min + options.tolerance ||

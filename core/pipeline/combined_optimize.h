@@ -47,12 +47,11 @@ struct CombinedOptions {
   // last iterations raise the average by 1e-4 to 4e-4 and nothing else, for a fifth of its time
   // each (cube_sphere 25k: 6 iterations -> 4, avg 0.86126 -> 0.86111; 100k: 5 -> 4).
   double average_tolerance = -1;
-  // Targets of the minimum Q and the minimum dihedral angle (degrees): once an iteration ends
-  // with both reached, their gains no longer count, only the average's (0 and 0: every gain
-  // counts). The free-boundary polish takes the max-min's targets, the minimum it raises the
-  // poor tets to; the average-quality passes that follow raise the average faster.
-  double min_target = 0;
-  double angle_target = 0;
+  // Once an iteration ends with the max-min's targets reached (the minimum Q at least
+  // maxmin_options.q_below, the minimum dihedral angle at least its angle_below: no poor tet
+  // left for it), gains in the minima no longer count, only the average's. The free-boundary
+  // polish sets it: the average-quality passes that follow raise the average faster.
+  bool stop_at_maxmin_targets = false;
 };
 
 struct CombinedStats {

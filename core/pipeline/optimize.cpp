@@ -174,8 +174,7 @@ struct PolishStop {
   double average = kPolishAverageTolerance;
   double minimum = CombinedOptions{}.tolerance;
   double angle = CombinedOptions{}.angle_tolerance;
-  double min_target = 0;  // CombinedOptions::min_target, angle_target
-  double angle_target = 0;
+  bool maxmin_targets = false;  // CombinedOptions::stop_at_maxmin_targets
 };
 
 void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r,
@@ -188,8 +187,7 @@ void run_polish3_with(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r
   co.average_tolerance = stop.average;
   co.tolerance = stop.minimum;
   co.angle_tolerance = stop.angle;
-  co.min_target = stop.min_target;
-  co.angle_target = stop.angle_target;
+  co.stop_at_maxmin_targets = stop.maxmin_targets;
   co.swap.use_guard = true;
   co.swap.guard_measure = Measure::kQ;
   co.swap.guard_floor = o.polish_q_floor;
@@ -467,11 +465,11 @@ constexpr double kFreePolishMinTolerance = 1e-3;
 // And the minimum dihedral angle's (degrees).
 constexpr double kFreePolishAngleTolerance = 0.1;
 // And once an iteration ends with the max-min's targets reached (Q_min >= 0.5, minimum dihedral
-// angle >= 30 degrees: MaxMinOptions' q_below / angle_below, below which it moves vertices),
-// gains in the minimum no longer count there, only the average's: the max-min has no poor tet
-// left, the average-quality passes follow. At ~10M tets (docs/benchmarks.md, stop 30) the
-// polish's third iteration raised Q_min 0.5001 -> 0.5002 (the second reached 0.5001) and the
-// average by 0.0006, for ~18 s of the run.
+// angle >= 30 degrees: CombinedOptions::stop_at_maxmin_targets), gains in the minima no longer
+// count there, only the average's: the max-min has no poor tet left, the average-quality passes
+// follow. At ~10M tets (docs/benchmarks.md, stop 30) the polish's third iteration raised Q_min
+// 0.5001 -> 0.5002 (the second reached 0.5001) and the average by 0.0006, for ~18 s of the run.
+constexpr bool kFreePolishStopsAtTargets = true;
 
 // The surface coarsening of a free-boundary run (o.coarsen_surface; issue 13: the femur's surface
 // is 1.6x finer than its interior): surface edges shorter than that fraction of the interior
@@ -572,8 +570,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
                remove_boundary_caps(m, b, bc).nb_removed;
       },
       o.mean_passes > 0 ? PolishStop{kFreePolishAverageTolerance, kFreePolishMinTolerance,
-                                     kFreePolishAngleTolerance, MaxMinOptions{}.q_below,
-                                     MaxMinOptions{}.angle_below}
+                                     kFreePolishAngleTolerance, kFreePolishStopsAtTargets}
                         : PolishStop{});
   bm.passes = 2;
   remove_boundary_caps(mesh, b, bc);

@@ -67,20 +67,22 @@ TEST(CombinedOptimize, ReachedTargetsLeaveTheAverageAloneToContinue) {
   const CombinedStats s0 = combined_optimize(free_run, o);
   ASSERT_GT(s0.iterations, 1);  // else the targets below could not shorten anything
   CombinedOptions reached = o;
-  reached.min_target = 1e-9;
-  reached.angle_target = 1e-9;
+  reached.stop_at_maxmin_targets = true;
+  reached.maxmin_options.q_below = 1e-9;
+  reached.maxmin_options.angle_below = 1e-9;
   TetMesh m = start;
   std::vector<QualityStats> its;
   const CombinedStats s1 =
       combined_optimize(m, reached, [&](int, const QualityStats& q) { its.push_back(q); });
   ASSERT_EQ(its.size(), 1u);
-  EXPECT_GE(its[0].q_min, reached.min_target);
-  EXPECT_GE(its[0].min_angle, reached.angle_target);
+  EXPECT_GE(its[0].q_min, reached.maxmin_options.q_below);
+  EXPECT_GE(its[0].min_angle, reached.maxmin_options.angle_below);
   EXPECT_EQ(s1.iterations, 1);
   EXPECT_TRUE(s1.converged);
   CombinedOptions unreachable = o;
-  unreachable.min_target = 2;
-  unreachable.angle_target = 200;
+  unreachable.stop_at_maxmin_targets = true;
+  unreachable.maxmin_options.q_below = 2;  // the max-min is off here: only the targets change
+  unreachable.maxmin_options.angle_below = 200;
   TetMesh m2 = start;
   const CombinedStats s2 = combined_optimize(m2, unreachable);
   EXPECT_EQ(s2.iterations, s0.iterations);
