@@ -31,11 +31,8 @@ CombinedStats combined_optimize(TetMesh& mesh, const CombinedOptions& options,
     const SmoothStats ss = smooth_laplacian(mesh, smooth);
     if (options.maxmin) stats.nb_maxmin_moved += smooth_maxmin3(mesh, maxmin).nb_moved;
     if (options.extra_smoothing) stats.nb_maxmin_moved += options.extra_smoothing(mesh);
-    if (options.keep_min_q) {
-      double q_min = std::numeric_limits<double>::infinity();
-      for (double q : element_qualities(mesh, Measure::kQ)) q_min = std::min(q_min, q);
-      swap.guard_floor = std::max(options.swap.guard_floor, q_min);
-    }
+    if (options.keep_min_q)
+      swap.guard_floor = std::max(options.swap.guard_floor, min_quality(mesh, Measure::kQ));
     const SwapStats sw = swap_slivers(mesh, swap);
     stats.nb_moved += ss.nb_moved + ss.nb_half;
     stats.nb_flips += sw.nb_flip23 + sw.nb_flip32 + sw.nb_edge_removals;

@@ -36,8 +36,7 @@ FeMeasures measure(const Mesh& mesh, const FeOptions& o, long nb_elements) {
   const P1System sys = p1_system(mesh);
   const ExplicitTimeStep ts = explicit_time_step(sys, o.eigen_tolerance);
   const PoissonCg cg = poisson_cg(sys, o.cg_tolerance);
-  double dt_e = std::numeric_limits<double>::infinity();
-  for (double v : element_qualities(mesh, Measure::kTimeStep)) dt_e = std::min(dt_e, v);
+  const double dt_e = min_quality(mesh, Measure::kTimeStep);
   m.measured = true;
   m.time_step = ts.time_step / o.wave_speed;
   m.element_time_step = dt_e / o.wave_speed;

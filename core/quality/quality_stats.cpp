@@ -103,38 +103,34 @@ QualityStats quality_stats_from_values(const std::vector<double>& q, const std::
   return s;
 }
 
-QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
-  // The four measures of each tet in one pass (in parallel), the dead slots squeezed out in
-  // order: the same values as four element_qualities, for any number of threads.
-  const int nt = mesh.nb_tets();
-  std::vector<std::array<double, 4>> all(static_cast<std::size_t>(nt));
-  std::vector<char> live(static_cast<std::size_t>(nt));
-#pragma omp parallel for schedule(static, 1024)
-  for (int t = 0; t < nt; ++t) {
-    const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
-    live[t] = v[0] >= 0;
-    if (live[t])
-      all[t] = tet_table_qualities(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                                   mesh.point(v[3]));
-  }
-  std::vector<double> m[4];
-  for (auto& x : m) x.reserve(static_cast<std::size_t>(nt));
-  for (int t = 0; t < nt; ++t)
-    if (live[t])
-      for (int k = 0; k < 4; ++k) m[k].push_back(all[t][k]);
-  return quality_stats_from_values(m[0], m[1], m[2], m[3], 3, label);
-}
+namespace {
 
-QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
+// The partial sums of one block of tets (quality_stats, quality_summary).
+struct Part {
+  double sum = 0, sum_rr = 0;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  double angle_lo = std::numeric_limits<double>::infinity(), angle_hi = -angle_lo;
+  long n = 0;
+  QCounts counts;
+  void add(const Part& p) {
+    n += p.n;
+    sum += p.sum;
+    sum_rr += p.sum_rr;
+    lo = std::min(lo, p.lo);
+    hi = std::max(hi, p.hi);
+    angle_lo = std::min(angle_lo, p.angle_lo);
+    angle_hi = std::max(angle_hi, p.angle_hi);
+    counts.add(p.counts);
+  }
+};
+
+// The live tets in fixed blocks of kBlock, in parallel; each block summed in tet order, the
+// blocks in block order: the same figures for any number of threads. `tables` adds the radius
+// ratio and the dihedral angles (tet_table_qualities) to Q.
+QualityStats reduce_tets(const TetMesh& mesh, const std::string& label, bool tables) {
   const int nt = mesh.nb_tets();
   constexpr int kBlock = 4096;
   const int nb = (nt + kBlock - 1) / kBlock;
-  struct Part {
-    double sum = 0, lo = std::numeric_limits<double>::infinity(),
-           hi = -std::numeric_limits<double>::infinity();
-    long n = 0;
-    QCounts counts;
-  };
   std::vector<Part> parts(static_cast<std::size_t>(nb));
 #pragma omp parallel for schedule(static, 4)
   for (int b = 0; b < nb; ++b) {
@@ -143,8 +139,18 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
     for (int t = b * kBlock; t < end; ++t) {
       const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
       if (v[0] < 0) continue;
-      const double q = tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                                   mesh.point(v[3]), Measure::kQ);
+      const double *a = mesh.point(v[0]), *b1 = mesh.point(v[1]), *c = mesh.point(v[2]),
+                   *d = mesh.point(v[3]);
+      double q;
+      if (tables) {
+        const std::array<double, 4> all = tet_table_qualities(a, b1, c, d);
+        q = all[0];
+        p.sum_rr += all[1];
+        p.angle_lo = std::min(p.angle_lo, all[2]);
+        p.angle_hi = std::max(p.angle_hi, all[3]);
+      } else {
+        q = tet_quality(a, b1, c, d, Measure::kQ);
+      }
       ++p.n;
       p.sum += q;
       p.lo = std::min(p.lo, q);
@@ -152,17 +158,11 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
       p.counts.add(q);
     }
   }
+  Part all;
+  for (const Part& p : parts) all.add(p);
   QualityStats s;
   s.label = label;
   s.dim = 3;
-  Part all;
-  for (const Part& p : parts) {
-    all.n += p.n;
-    all.sum += p.sum;
-    all.lo = std::min(all.lo, p.lo);
-    all.hi = std::max(all.hi, p.hi);
-    all.counts.add(p.counts);
-  }
   s.nb_elements = all.n;
   if (all.n == 0) return s;
   const double n = static_cast<double>(all.n);
@@ -170,7 +170,41 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
   s.q_max = all.hi;
   s.q_avg = all.sum / n;
   all.counts.fill(s);
+  if (tables) {
+    s.avg_radius_ratio = all.sum_rr / n;
+    s.min_angle = all.angle_lo;
+    s.max_angle = all.angle_hi;
+  }
   return s;
+}
+
+}  // namespace
+
+QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
+  return reduce_tets(mesh, label, true);
+}
+
+QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
+  return reduce_tets(mesh, label, false);
+}
+
+double min_quality(const TetMesh& mesh, Measure m) {
+  const int nt = mesh.nb_tets();
+  double lo = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static, 1024) reduction(min : lo)
+  for (int t = 0; t < nt; ++t) {
+    const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    if (v[0] < 0) continue;
+    lo = std::min(
+        lo, tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), m));
+  }
+  return lo;
+}
+
+double min_quality(const TriMesh2& mesh, Measure m) {
+  double lo = std::numeric_limits<double>::infinity();
+  for (double q : element_qualities(mesh, m)) lo = std::min(lo, q);
+  return lo;
 }
 
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {

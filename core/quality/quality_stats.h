@@ -38,14 +38,19 @@ struct QualityStats {
 std::vector<double> element_qualities(const TetMesh& mesh, Measure m);
 std::vector<double> element_qualities(const TriMesh2& mesh, Measure m);
 
+// The tables' statistics of a mesh. For tets: one parallel pass without per-element arrays, the
+// sums taken in fixed blocks of tets and the blocks in order: the same figures for any number of
+// threads (the average may differ in the last bits from quality_stats_from_values's on the
+// element_qualities, which sums in one sequence).
 QualityStats quality_stats(const TetMesh& mesh, const std::string& label);
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label);
 // The rows of quality_stats that come from Q alone (counts, bins, Q min / max / average, bad and
-// good percentages; the angles and the radius ratio left 0), in one parallel pass without the
-// per-element arrays: what a progress report shows after every iteration. Deterministic for any
-// number of threads (the average summed in fixed blocks, in order; it may differ from
-// quality_stats's in the last bits).
+// good percentages; the angles and the radius ratio left 0), without the angles' cost: what a
+// progress report shows after every iteration. Its Q rows are quality_stats's, bit for bit.
 QualityStats quality_summary(const TetMesh& mesh, const std::string& label);
+// The minimum of a measure over the live elements (+infinity without any); tets in parallel.
+double min_quality(const TetMesh& mesh, Measure m);
+double min_quality(const TriMesh2& mesh, Measure m);
 // Statistics from precomputed per-element values (Q, radius ratio, min angle, max angle).
 QualityStats quality_stats_from_values(const std::vector<double>& q, const std::vector<double>& rr,
                                        const std::vector<double>& min_angle,

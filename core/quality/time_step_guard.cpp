@@ -23,9 +23,7 @@ double min_time_step(const TetMesh& mesh, const int* t, const int* end) {
 }
 
 double min_time_step(const TetMesh& mesh) {
-  double m = std::numeric_limits<double>::infinity();
-  for (double v : element_qualities(mesh, Measure::kTimeStep)) m = std::min(m, v);
-  return m;
+  return min_quality(mesh, Measure::kTimeStep);
 }
 
 TimeStepGuard time_step_guard(const TetMesh& mesh, double factor) {

@@ -11,6 +11,8 @@
 #include "core/geometry/tet_geometry.h"
 #include "core/quality/quality_stats.h"
 #include "core/quality/quality_table.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/thread_counts.h"
 
 namespace cvtmesh {
 namespace {
@@ -179,6 +181,42 @@ TEST(QualityStats, BinsAndPercentagesOnAHandMadeSet) {
   double sum = 0;
   for (double v : qv) sum += v;
   EXPECT_DOUBLE_EQ(s.q_avg, sum / 10);
+}
+
+TEST(QualityStats, OnePassOverTheTetsMatchesThePerElementValuesForAnyThreadCount) {
+  // A jittered lattice's Delaunay mesh (every kind of tet, more than one block of 4096) with a
+  // dead slot: the one-pass statistics are those of the per-element values (the average to
+  // rounding: summed in blocks), the same bits for 1, 2 and 3 threads; min_quality is their
+  // minimum.
+  TetMesh m = testing::delaunay_of_points(testing::cube_lattice(14, 0.3));
+  ASSERT_GT(m.nb_tets(), 2 * 4096);
+  for (int k = 0; k < 4; ++k) m.tets[4 * 5 + k] = -1;
+  const auto ref = quality_stats_from_values(
+      element_qualities(m, Measure::kQ), element_qualities(m, Measure::kRadiusRatio),
+      element_qualities(m, Measure::kMinAngle), element_qualities(m, Measure::kMaxAngle), 3, "");
+  ASSERT_EQ(ref.nb_elements, m.nb_tets() - 1);
+  const auto runs = testing::for_each_thread_count(
+      [&] { return std::make_pair(quality_stats(m, ""), quality_summary(m, "")); });
+  for (const auto& [s, q] : runs) {
+    EXPECT_EQ(s.nb_elements, ref.nb_elements);
+    for (int b = 0; b < 4; ++b) EXPECT_EQ(s.bin[b], ref.bin[b]);
+    EXPECT_EQ(s.q_min, ref.q_min);
+    EXPECT_EQ(s.q_max, ref.q_max);
+    EXPECT_EQ(s.min_angle, ref.min_angle);
+    EXPECT_EQ(s.max_angle, ref.max_angle);
+    EXPECT_EQ(s.bad_pct, ref.bad_pct);
+    EXPECT_EQ(s.good_pct, ref.good_pct);
+    EXPECT_NEAR(s.q_avg, ref.q_avg, 1e-12);
+    EXPECT_NEAR(s.avg_radius_ratio, ref.avg_radius_ratio, 1e-12);
+    EXPECT_EQ(s.q_avg, runs.front().first.q_avg);
+    EXPECT_EQ(s.avg_radius_ratio, runs.front().first.avg_radius_ratio);
+    // The summary's Q rows are the full statistics' bit for bit.
+    EXPECT_EQ(q.q_avg, s.q_avg);
+    EXPECT_EQ(q.q_min, s.q_min);
+    EXPECT_EQ(q.bin[3], s.bin[3]);
+  }
+  EXPECT_EQ(min_quality(m, Measure::kQ), ref.q_min);
+  EXPECT_EQ(min_quality(m, Measure::kMinAngle), ref.min_angle);
 }
 
 TEST(QualityTable, HasThePaperRowsInTextMarkdownAndJson) {
