@@ -1,7 +1,6 @@
 #include "core/pipeline/combined_optimize.h"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 #include "core/mesh/build_adjacency.h"

@@ -379,7 +379,7 @@ void raise_mean_quality(TetMesh& mesh, const OptimizeOptions& o, const BoundaryM
   so.guard_measure = Measure::kMinAngle;
   // The minimum dihedral angle's floor: 30 degrees, or the mesh's minimum if above (never lowered).
   auto flip = [&] {
-    so.guard_floor = std::max(30.0, quality_stats(mesh, "").min_angle);
+    so.guard_floor = std::max(30.0, min_quality(mesh, Measure::kMinAngle));
     swap_slivers(mesh, so);
   };
   so.dt_guard = dt_guard;
