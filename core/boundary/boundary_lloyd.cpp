@@ -54,7 +54,9 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
     throw std::invalid_argument("boundary_lloyd: relaxation in (0,2), rounds and halvings >= 0");
   if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
   BoundaryLloydStats stats;
-  Lloyd3CellBuffers buffers;  // kept from round to round
+  Lloyd3CellBuffers own_buffers;  // kept from round to round
+  Lloyd3CellBuffers& buffers = o.cell_buffers ? *o.cell_buffers : own_buffers;
+  buffers.hints.assign(mesh.nb_vertices(), -1);  // hints of another sizing field are not ours
   CellCentroids cc = voronoi_centroids_3d(mesh, sizing, buffers);
   stats.energy.push_back(cc.energy);
   const double h = mean_edge_length(mesh);

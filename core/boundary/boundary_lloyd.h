@@ -14,6 +14,7 @@
 
 #include "core/geometry/boundary_geometry.h"
 #include "core/boundary/volume_budget.h"
+#include "core/cvt/lloyd3_cells.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/mesh/tet_mesh.h"
 
@@ -36,6 +37,9 @@ struct BoundaryLloydOptions {
   double tri_guard = 0.3;
   // If set, boundary moves are admitted only within this budget (and charged to it).
   VolumeBudget* volume_budget = nullptr;
+  // Cell buffers kept by the caller (null: the call's own), shared with the Lloyd runs around it
+  // (Lloyd3Options::cell_buffers).
+  Lloyd3CellBuffers* cell_buffers = nullptr;
 };
 
 struct BoundaryLloydStats {

@@ -76,7 +76,16 @@ void prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
   c.dual_ok.assign(nt, 0);
   // Written for every dual_ok tet below, read only for those: no need to clear (the buffer is
   // reused from one iteration to the next; at 1M tets it is ~200 MB).
-  c.dual_piece.resize(24 * static_cast<std::size_t>(nt));
+  // A few more tets than last time (the flips of a round add some) must not reallocate: a
+  // vector's growth copies the old contents (not needed: every piece read is rewritten below)
+  // into fresh pages, ~1.9 GB at 10M tets and old + new resident at once. Released first, then
+  // allocated with room for 1/16 more.
+  const std::size_t pieces = 24 * static_cast<std::size_t>(nt);
+  if (c.dual_piece.capacity() < pieces) {
+    std::vector<double>().swap(c.dual_piece);
+    c.dual_piece.reserve(pieces + pieces / 16);
+  }
+  c.dual_piece.resize(pieces);
   if (rho)
     c.rho_grad.resize(3 * static_cast<std::size_t>(nt));
   else

@@ -33,6 +33,7 @@ class Lloyd3Problem {
         o_(o),
         delaunay_(Delaunay3::create(o.backend)),
         constrained_set_(constrained_faces(mesh)),
+        cells_(o.cell_buffers ? *o.cell_buffers : own_cells_),
         anderson_(o.relaxation, o.anderson_depth),
         lbfgs_(o.lbfgs_memory, o.relaxation) {
     if (o_.sizing)
@@ -97,7 +98,8 @@ class Lloyd3Problem {
   std::unique_ptr<Delaunay3> delaunay_;
   ConstrainedFaces constrained_set_;  // the constrained triangles never change
   std::shared_ptr<const SizingField3> sizing_;
-  Lloyd3CellBuffers cells_;
+  Lloyd3CellBuffers own_cells_;
+  Lloyd3CellBuffers& cells_;  // own_cells_ or the caller's
   AndersonLloyd3 anderson_;
   LbfgsLloyd3 lbfgs_;
   // Every unconstrained face not in non_delaunay_ is locally Delaunay (after the flips of the last

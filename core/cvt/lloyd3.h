@@ -48,6 +48,10 @@ struct Lloyd3Options {
   // positively oriented), the iteration goes on with that mesh (its cells are clipped where it is
   // not Delaunay) instead of rebuilding (and at the end too: TetGen's rebuild leaves them as well).
   double max_flip_leftover = 0.01;
+  // Cell buffers kept by the caller from one run to the next (null: the run's own). The
+  // pipeline's Lloyd, constrained CVT and second Lloyd share one: at 10M tets the cell mesh is
+  // ~2.5 GB, paged in once instead of at each phase's first evaluation.
+  Lloyd3CellBuffers* cell_buffers = nullptr;
 };
 
 // Runs the iteration on `mesh` (valid on entry; valid, with the same constrained triangles, on

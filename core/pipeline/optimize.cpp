@@ -91,8 +91,11 @@ void report(const OptimizeOptions& o, const std::string& phase, int it, double D
 
 }  // namespace
 
-// Lloyd to a CVDT (3D).
-void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+namespace {
+
+// Lloyd to a CVDT (3D), with the caller's cell buffers if given.
+void run_lloyd3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r,
+                Lloyd3CellBuffers* buffers) {
   Lloyd3Options lo;
   lo.lloyd.max_iterations = o.max_iterations;
   lo.lloyd.tolerance = o.tolerance;
@@ -100,6 +103,7 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   lo.anderson_depth = o.anderson_depth;
   lo.lbfgs_memory = o.lbfgs_memory;  // resolved: 5 for the default -1
   lo.sizing = sizing3(mesh, o);
+  lo.cell_buffers = buffers;
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
     r.lloyd_energy.push_back(s.energy);
@@ -112,6 +116,13 @@ void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
   r.seconds_lloyd = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.iterations = lr.iterations;
   r.converged = lr.converged;
+}
+
+}  // namespace
+
+// Lloyd to a CVDT (3D).
+void run_cvdt3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r) {
+  run_lloyd3(mesh, o, r, nullptr);
 }
 
 // SWAP (Du & Wang): edge removals and 2-3 flips raising the local minimum Q, to convergence.
@@ -519,7 +530,10 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
   bf.flat_angle = o.feature_angle;
   bf.hausdorff = tol;
   bf.volume_budget = &budget;
-  run_cvdt3(mesh, o, r);
+  // One set of cell buffers for the three CVT phases (Lloyd3Options::cell_buffers), released
+  // before the SWAP.
+  Lloyd3CellBuffers cells;
+  run_lloyd3(mesh, o, r, &cells);
   const int lloyd_iterations = r.iterations;
   const bool lloyd_converged = r.converged;
   flip_boundary_edges(mesh, b, bf);
@@ -534,6 +548,7 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
                         : o.boundary_lloyd_rounds;
     bl.hausdorff = tol;
     bl.volume_budget = &budget;
+    bl.cell_buffers = &cells;
     const auto sizing = sizing3(mesh, o);
     report_start(o, "bnd-cvt");
     const BoundaryLloydStats st = boundary_lloyd(mesh, b, *sizing, bl);
@@ -545,10 +560,11 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
     again.max_iterations =
         std::min(o.max_iterations, r.nb_boundary_removed > 0 ? kCoarsenedRelloydIterations : 30);
     OptimizeResult r2;
-    run_cvdt3(mesh, again, r2);
+    run_lloyd3(mesh, again, r2, &cells);
     r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
     r.seconds_lloyd += r2.seconds_lloyd;
   }
+  cells = Lloyd3CellBuffers{};
   budget.tolerance = 0.9 * o.volume_tolerance;
   run_swap3(mesh, o, r);
   BoundaryMaxMinOptions bm;

@@ -6,6 +6,7 @@
 #include <random>
 #include <set>
 #include <tuple>
+#include <utility>
 
 #include "core/cvt/voronoi_cell3.h"
 #include "core/geometry/vec3.h"
@@ -239,6 +240,36 @@ TEST(Lloyd3, SameResultForAnyThreadCount) {
       {1, 2});
   EXPECT_EQ(results[0].xyz, results[1].xyz);  // bitwise
   EXPECT_EQ(results[0].tets, results[1].tets);
+}
+
+// The pipeline shares one set of cell buffers between its CVT phases (Lloyd3Options::
+// cell_buffers): a run on buffers left by a run on another mesh -- a smaller one first (the
+// buffers grow), then a larger one (they are reused) -- gives the mesh a run on its own buffers
+// gives, bit for bit.
+TEST(Lloyd3, SharedCellBuffersGiveTheSameMeshAsOwnBuffers) {
+  const MeshData small = testing::cube_sphere(0.2, 0.15), large = testing::cube_sphere(0.14, 0.1);
+  ASSERT_LT(small.tet.nb_tets(), large.tet.nb_tets());
+  auto run = [](const TetMesh& input, Lloyd3CellBuffers* buffers) {
+    TetMesh m = input;
+    Lloyd3Options o;
+    o.lloyd.max_iterations = 3;
+    o.lloyd.tolerance = 0;
+    o.lbfgs_memory = 5;
+    o.cell_buffers = buffers;
+    lloyd_optimize_3d(m, o);
+    return m;
+  };
+  const TetMesh own_small = run(small.tet, nullptr), own_large = run(large.tet, nullptr);
+  Lloyd3CellBuffers shared;
+  const TetMesh shared_small = run(small.tet, &shared);
+  const TetMesh shared_large = run(large.tet, &shared);
+  const TetMesh shared_small_again = run(small.tet, &shared);
+  for (const auto& [own, other] :
+       {std::pair{&own_small, &shared_small}, std::pair{&own_large, &shared_large},
+        std::pair{&own_small, &shared_small_again}}) {
+    EXPECT_EQ(own->xyz, other->xyz);  // bitwise
+    EXPECT_EQ(own->tets, other->tets);
+  }
 }
 
 }  // namespace
