@@ -15,6 +15,7 @@
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/vertex_tets.h"
 #include "core/quality/quality.h"
+#include "core/swap/apply_swap.h"
 #include "core/swap/compact_tets.h"
 #include "core/swap/polygon_triangulations.h"
 
@@ -52,6 +53,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
   if (!model.geometry) return stats;
   const double cos_flat = std::cos(o.flat_angle * kPi / 180);
   bool changed_any = false;
+  if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
   for (int pass = 0; pass < o.passes; ++pass) {
     ++stats.passes;
     const VertexTets star = vertex_tets(mesh);
@@ -217,12 +219,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       // the ring has a stale star now: none is touched again in this pass.
       for (int t : p.ring)
         for (int j = 0; j < 4; ++j) dirty[mesh.tets[4 * static_cast<std::size_t>(t) + j]] = 1;
-      for (int t : p.ring) mesh.tets[4 * static_cast<std::size_t>(t)] = -1;
-      for (const auto& t : best_tets) {
-        mesh.tets.insert(mesh.tets.end(), t.begin(), t.end());
-        mesh.tet_region.push_back(p.region);
-        if (!mesh.tet_tags.empty()) mesh.tet_tags.push_back(0);
-      }
+      apply_boundary_retriangulation(mesh, p.ring, best_tets, p.region);
       mesh.tris[3 * static_cast<std::size_t>(p.f1)] = a;
       mesh.tris[3 * static_cast<std::size_t>(p.f1) + 1] = c;
       mesh.tris[3 * static_cast<std::size_t>(p.f1) + 2] = d;
@@ -234,7 +231,6 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
     }
     if (flipped) {
       // The dead slots must not be read by the next pass's stars: compact now.
-      mesh.adj.clear();
       compact_tets(mesh);
       changed_any = true;
     }

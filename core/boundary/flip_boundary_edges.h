@@ -10,7 +10,8 @@
 //    not fit the volume budget;
 //  - kept only if the minimum over the new tets' min(Q, min dihedral / 60 degrees) and the new
 //    triangles' Q rises by at least min_gain above the old one.
-// Vertices never move. On exit the tets are compacted and the adjacency rebuilt.
+// Vertices never move. On exit the tets are compacted and the adjacency current (repaired in
+// place).
 #pragma once
 #include <limits>
 

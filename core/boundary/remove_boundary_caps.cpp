@@ -122,6 +122,13 @@ CapCheck plan_cap_removal(const TetMesh& m, const BoundaryModel& model, const Ve
 
 void apply_cap_removal(TetMesh& m, const CapPlan& p, VolumeBudget* budget) {
   if (budget && !p.delta.empty()) budget->commit(p.delta);
+  // The tets behind its two inner faces now stand on the boundary.
+  if (m.adj.size() == m.tets.size())
+    for (int f = 0; f < 4; ++f) {
+      int& here = m.adj[4 * static_cast<std::size_t>(p.tet) + f];
+      if (here >= 0) m.adj[here] = -1;
+      here = -1;
+    }
   m.tets[4 * static_cast<std::size_t>(p.tet)] = -1;
   int* f1 = &m.tris[3 * static_cast<std::size_t>(p.f1)];
   int* f2 = &m.tris[3 * static_cast<std::size_t>(p.f2)];
@@ -171,7 +178,6 @@ CapRemovalStats remove_boundary_caps(TetMesh& mesh, const BoundaryModel& model,
       ++stats.nb_removed;
     }
     if (removed == 0) break;
-    mesh.adj.clear();
     compact_tets(mesh);
     changed = true;
   }

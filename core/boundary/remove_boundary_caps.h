@@ -65,8 +65,9 @@ CapCheck plan_cap_removal(const TetMesh& mesh, const BoundaryModel& model, const
                           const BoundaryFans& fans, int t, const CapRemovalOptions& options,
                           CapPlan& plan);
 
-// Kills the cap (tets[4t] = -1) and retargets its two triangles; charges the budget. The adjacency
-// and the stars are stale afterwards (the driver compacts and rebuilds).
+// Kills the cap (tets[4t] = -1) and retargets its two triangles; charges the budget. The
+// adjacency, if built, stays valid (the faces behind the cap's become boundary faces); the stars
+// are stale afterwards (the driver compacts).
 void apply_cap_removal(TetMesh& mesh, const CapPlan& plan, VolumeBudget* budget);
 
 struct CapRemovalStats {

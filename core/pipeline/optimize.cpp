@@ -374,7 +374,9 @@ constexpr double kMeanPassMinGain = 0.008;
 void raise_mean_quality(TetMesh& mesh, const OptimizeOptions& o, const BoundaryModel& b,
                         double hausdorff, VolumeBudget& budget) {
   if (o.mean_passes <= 0) return;
-  build_adjacency(mesh);
+  // Every step before keeps the adjacency current (the swaps, collapses, boundary flips and cap
+  // removals repair it in place): no rebuild (~1.5 s at 10M tets).
+  if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
   TimeStepGuard dt_guard;
   if (o.objective == "dt")
     dt_guard = time_step_guard(mesh, std::numeric_limits<double>::infinity());

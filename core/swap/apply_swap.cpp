@@ -9,6 +9,89 @@
 
 namespace cvtmesh {
 
+namespace {
+
+// The boundary faces of a cavity (live tets) and what lies behind each (a slot 4t'+f', or -1).
+struct CavityFaces {
+  std::vector<FaceKey> key;
+  std::vector<int> behind;
+};
+
+CavityFaces cavity_faces(const TetMesh& mesh, const std::vector<int>& old_tets,
+                         const char* caller) {
+  auto is_old = [&](int t) {
+    return std::find(old_tets.begin(), old_tets.end(), t) != old_tets.end();
+  };
+  CavityFaces c;
+  for (int t : old_tets) {
+    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+    if (tv[0] < 0)
+      throw std::invalid_argument(std::string(caller) + ": tet " + std::to_string(t) + " is dead");
+    for (int f = 0; f < 4; ++f) {
+      const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
+      if (behind >= 0 && is_old(behind / 4)) continue;
+      c.key.push_back(face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]));
+      c.behind.push_back(behind);
+    }
+  }
+  return c;
+}
+
+// Every face a = 4i+f of the new tets matched, before anything changes: to another new tet's
+// face (inner[a] = 4j+g), else to a boundary face of the cavity (outer[a] = its index), else
+// neither (both -1).
+struct FaceMatch {
+  std::vector<int> inner, outer;
+  std::vector<char> outer_used;
+};
+
+FaceMatch match_new_faces(const CavityFaces& cavity,
+                          const std::vector<std::array<int, 4>>& new_tets) {
+  const int nb_new = static_cast<int>(new_tets.size());
+  std::vector<FaceKey> keys(4 * static_cast<std::size_t>(nb_new));
+  for (int i = 0; i < nb_new; ++i) {
+    const auto& nt = new_tets[i];
+    for (int f = 0; f < 4; ++f)
+      keys[4 * i + f] = face_key(nt[kTetFace[f][0]], nt[kTetFace[f][1]], nt[kTetFace[f][2]]);
+  }
+  FaceMatch m;
+  m.inner.assign(keys.size(), -1);
+  m.outer.assign(keys.size(), -1);
+  m.outer_used.assign(cavity.key.size(), 0);
+  for (int a = 0; a < 4 * nb_new; ++a) {
+    for (int b = 0; b < 4 * nb_new && m.inner[a] < 0; ++b)
+      if (b / 4 != a / 4 && keys[b] == keys[a]) m.inner[a] = b;
+    if (m.inner[a] >= 0) continue;
+    for (std::size_t o = 0; o < cavity.key.size(); ++o)
+      if (!m.outer_used[o] && cavity.key[o] == keys[a]) {
+        m.outer_used[o] = 1;
+        m.outer[a] = static_cast<int>(o);
+        break;
+      }
+  }
+  return m;
+}
+
+// The adjacency of the new tets (in `slots`) and of the tets behind the cavity: a face matched
+// to nothing has nothing behind it (-1).
+void link_new_tets(TetMesh& mesh, const std::vector<int>& slots, const CavityFaces& cavity,
+                   const FaceMatch& m) {
+  for (std::size_t a = 0; a < m.inner.size(); ++a) {
+    const int here = 4 * slots[a / 4] + static_cast<int>(a % 4);
+    if (m.inner[a] >= 0) {
+      mesh.adj[here] = 4 * slots[m.inner[a] / 4] + m.inner[a] % 4;
+    } else if (m.outer[a] >= 0) {
+      const int behind = cavity.behind[m.outer[a]];
+      mesh.adj[here] = behind;
+      if (behind >= 0) mesh.adj[behind] = here;
+    } else {
+      mesh.adj[here] = -1;
+    }
+  }
+}
+
+}  // namespace
+
 void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots) {
   if (plan.status != SwapStatus::kOk)
     throw std::invalid_argument(std::string("apply_swap: the plan is not valid (") +
@@ -16,50 +99,14 @@ void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots) {
   const auto& old_tets = plan.old_tets;
   const int nb_old = static_cast<int>(old_tets.size());
   const int nb_new = static_cast<int>(plan.new_tets.size());
-  auto is_old = [&](int t) {
-    return std::find(old_tets.begin(), old_tets.end(), t) != old_tets.end();
-  };
-
-  // The cavity's boundary faces and what lies behind each (a slot 4t'+f', or -1).
-  std::vector<FaceKey> outer_key;
-  std::vector<int> outer_behind;
-  for (int t : old_tets) {
-    const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
-    if (tv[0] < 0) throw std::invalid_argument("apply_swap: tet " + std::to_string(t) + " is dead");
-    for (int f = 0; f < 4; ++f) {
-      const int behind = mesh.adj[4 * static_cast<std::size_t>(t) + f];
-      if (behind >= 0 && is_old(behind / 4)) continue;
-      outer_key.push_back(face_key(tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]));
-      outer_behind.push_back(behind);
-    }
-  }
-
-  // Match every face of every new tet, before changing anything: either another new tet's face
-  // (inner = 4j+g) or a boundary face of the cavity (outer index).
-  std::vector<FaceKey> keys(4 * static_cast<std::size_t>(nb_new));
-  for (int i = 0; i < nb_new; ++i) {
-    const auto& nt = plan.new_tets[i];
-    for (int f = 0; f < 4; ++f)
-      keys[4 * i + f] = face_key(nt[kTetFace[f][0]], nt[kTetFace[f][1]], nt[kTetFace[f][2]]);
-  }
-  std::vector<int> inner(4 * static_cast<std::size_t>(nb_new), -1), outer(inner.size(), -1);
-  std::vector<char> outer_used(outer_key.size(), 0);
-  for (int a = 0; a < 4 * nb_new; ++a) {
-    for (int b = 0; b < 4 * nb_new && inner[a] < 0; ++b)
-      if (b / 4 != a / 4 && keys[b] == keys[a]) inner[a] = b;
-    if (inner[a] >= 0) continue;
-    for (std::size_t o = 0; o < outer_key.size(); ++o)
-      if (!outer_used[o] && outer_key[o] == keys[a]) {
-        outer_used[o] = 1;
-        outer[a] = static_cast<int>(o);
-        break;
-      }
-    if (outer[a] < 0)
+  const CavityFaces cavity = cavity_faces(mesh, old_tets, "apply_swap");
+  const FaceMatch match = match_new_faces(cavity, plan.new_tets);
+  for (std::size_t a = 0; a < match.inner.size(); ++a)
+    if (match.inner[a] < 0 && match.outer[a] < 0)
       throw InvariantError(
           "apply_swap: a face of a new tet is neither shared by another new tet "
           "nor a boundary face of the cavity");
-  }
-  if (std::find(outer_used.begin(), outer_used.end(), 0) != outer_used.end())
+  if (std::find(match.outer_used.begin(), match.outer_used.end(), 0) != match.outer_used.end())
     throw InvariantError(
         "apply_swap: a boundary face of the cavity is not covered by the new tets");
 
@@ -99,16 +146,36 @@ void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots) {
     mesh.tet_region[slot] = plan.region;
     if (!mesh.tet_tags.empty()) mesh.tet_tags[slot] = 0;
   }
-  for (int a = 0; a < 4 * nb_new; ++a) {
-    const int here = 4 * plan.new_ids[a / 4] + a % 4;
-    if (inner[a] >= 0) {
-      mesh.adj[here] = 4 * plan.new_ids[inner[a] / 4] + inner[a] % 4;
-    } else {
-      const int behind = outer_behind[outer[a]];
-      mesh.adj[here] = behind;
-      if (behind >= 0) mesh.adj[behind] = here;
-    }
+  link_new_tets(mesh, plan.new_ids, cavity, match);
+}
+
+std::vector<int> apply_boundary_retriangulation(TetMesh& mesh, const std::vector<int>& old_tets,
+                                                const std::vector<std::array<int, 4>>& new_tets,
+                                                int region) {
+  if (mesh.adj.size() != mesh.tets.size())
+    throw std::invalid_argument("apply_boundary_retriangulation: adjacency not built");
+  const CavityFaces cavity = cavity_faces(mesh, old_tets, "apply_boundary_retriangulation");
+  const FaceMatch match = match_new_faces(cavity, new_tets);
+  for (std::size_t o = 0; o < cavity.key.size(); ++o)
+    if (!match.outer_used[o] && cavity.behind[o] >= 0)
+      throw InvariantError(
+          "apply_boundary_retriangulation: a face of the cavity with a tet behind it is not "
+          "covered by the new tets");
+  for (int t : old_tets) {
+    const std::size_t s = 4 * static_cast<std::size_t>(t);
+    std::fill(mesh.tets.begin() + s, mesh.tets.begin() + s + 4, -1);
+    std::fill(mesh.adj.begin() + s, mesh.adj.begin() + s + 4, -1);
   }
+  std::vector<int> slots;
+  for (const auto& t : new_tets) {
+    slots.push_back(mesh.nb_tets());
+    mesh.tets.insert(mesh.tets.end(), t.begin(), t.end());
+    mesh.adj.insert(mesh.adj.end(), {-1, -1, -1, -1});
+    mesh.tet_region.push_back(region);
+    if (!mesh.tet_tags.empty()) mesh.tet_tags.push_back(0);
+  }
+  link_new_tets(mesh, slots, cavity, match);
+  return slots;
 }
 
 SwapPlan apply_if_accepted(TetMesh& mesh, SwapPlan plan, const SwapCriterion* criterion) {

@@ -1,6 +1,7 @@
 // Commits a planned swap: replaces plan.old_tets by plan.new_tets and repairs the adjacency
 // locally (O(size of the cavity), no O(#T) work). The move only; the decision is accept_swap.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
@@ -16,6 +17,17 @@ namespace cvtmesh {
 // Throws std::invalid_argument if plan.status is not kOk, InvariantError if the new tets do not
 // have exactly the old cavity's boundary faces (a planner bug).
 void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots = nullptr);
+
+// A retriangulation at the boundary (a surface edge flip, flip_boundary_edges): the tets
+// `old_tets` (live, one region) are marked dead (all four ids and adjacency -1) and `new_tets`
+// appended (region `region`, tag 0); the adjacency is repaired locally, a face of a new tet that
+// matches neither another new tet's nor one of the cavity's boundary faces becoming a boundary
+// face (-1). Returns the new tets' slots. Throws std::invalid_argument if the adjacency is not
+// built or an old tet is dead, InvariantError if a face of the cavity with a tet behind it is not
+// covered by the new tets (the mesh would come apart there).
+std::vector<int> apply_boundary_retriangulation(TetMesh& mesh, const std::vector<int>& old_tets,
+                                                const std::vector<std::array<int, 4>>& new_tets,
+                                                int region);
 
 // The common tail of flip23 / flip32 / remove_edge: a valid plan is committed if there is no
 // criterion or the criterion accepts it; otherwise its status becomes kRejected. Returns the plan.
