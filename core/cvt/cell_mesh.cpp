@@ -59,7 +59,7 @@ CellMesh prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
 void prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
                        bool unconstrained_delaunay, CellMesh& c,
                        const std::vector<FaceKey>* suspect) {
-  c.star = build_vertex_star(m);
+  vertex_tets(m, c.star);  // reusing the arrays of the last call
   // The tets of the suspect faces: tested in full.
   std::vector<int> full;
   if (unconstrained_delaunay && suspect)
@@ -70,7 +70,7 @@ void prepare_cell_mesh(const TetMesh& m, const std::vector<double>* rho,
           full.push_back(*it);
       }
   std::sort(full.begin(), full.end());
-  c.constrained = constrained_face_flags(m);
+  constrained_face_flags(m, c.constrained);
   c.eps = coordinate_eps(m);
   const int nt = m.nb_tets();
   c.dual_ok.assign(nt, 0);

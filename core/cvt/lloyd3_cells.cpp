@@ -79,7 +79,9 @@ Lloyd3Cells lloyd3_cells(const TetMesh& m, const SizingField3& sizing, bool comp
   vertex_density(m, sizing, b.hints, b.H, b.rho);
   prepare_cell_mesh(m, &b.rho, delaunay_known, b.cm, non_delaunay);
   const VertexStar& star = b.cm.star;
-  std::vector<CellIntegrals> cells(nv);
+  // Written for every wanted vertex below, read only for those.
+  std::vector<CellIntegrals>& cells = b.cells;
+  cells.resize(nv);
   std::vector<char> wanted(nv, 0), clipped(nv, 1);
   for (int v = 0; v < nv; ++v) {
     const bool has_star = star.offset[v] < star.offset[v + 1];
@@ -100,6 +102,10 @@ Lloyd3Cells lloyd3_cells(const TetMesh& m, const SizingField3& sizing, bool comp
   for (int v = 0; v < nv; ++v)
     if (wanted[v]) (clipped[v] ? s.nb_clipped_cells : s.nb_dual_cells)++;
   Lloyd3Cells e;
+  e.free_ids.reserve(nv);
+  e.z.reserve(3 * static_cast<std::size_t>(nv));
+  e.c.reserve(3 * static_cast<std::size_t>(nv));
+  e.mass.reserve(nv);
   double dsum = 0;
   for (int v = 0; v < nv; ++v) {
     if (!wanted[v]) continue;

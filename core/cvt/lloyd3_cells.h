@@ -6,6 +6,7 @@
 #include "core/cvt/cell_mesh.h"
 #include "core/cvt/lloyd.h"
 #include "core/cvt/sizing_field3.h"
+#include "core/cvt/voronoi_cell3.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace cvtmesh {
@@ -31,8 +32,9 @@ struct Lloyd3Cells {
 // evaluated configuration (its stars and constrained faces serve the move safeguard).
 struct Lloyd3CellBuffers {
   CellMesh cm;
-  std::vector<int> hints;      // #V: where the sizing field found each vertex last time
-  std::vector<double> H, rho;  // #V: size and density at the vertices
+  std::vector<int> hints;            // #V: where the sizing field found each vertex last time
+  std::vector<double> H, rho;        // #V: size and density at the vertices
+  std::vector<CellIntegrals> cells;  // #V: the cells of the last evaluation (lloyd3_cells)
 };
 
 CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,

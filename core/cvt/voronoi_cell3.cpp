@@ -12,6 +12,12 @@
 namespace cvtmesh {
 
 std::vector<char> constrained_face_flags(const TetMesh& m) {
+  std::vector<char> flags;
+  constrained_face_flags(m, flags);
+  return flags;
+}
+
+void constrained_face_flags(const TetMesh& m, std::vector<char>& flags) {
   // Only a face whose three vertices are on constrained triangles can be one: hash those only.
   std::unordered_set<FaceKey, FaceKeyHash> cf;
   cf.reserve(2 * m.tris.size() / 3 + 1);
@@ -21,8 +27,11 @@ std::vector<char> constrained_face_flags(const TetMesh& m) {
     cf.insert(face_key(v[0], v[1], v[2]));
     on[v[0]] = on[v[1]] = on[v[2]] = 1;
   }
-  std::vector<char> flags(m.tets.size(), 0);
-  for (int t = 0; t < m.nb_tets(); ++t) {
+  flags.assign(m.tets.size(), 0);
+  const int nt = m.nb_tets();
+  // In parallel: the set is only read (once per Lloyd iteration, ~0.2 s of one thread at 10M tets).
+#pragma omp parallel for schedule(static, 4096)
+  for (int t = 0; t < nt; ++t) {
     const int* v = &m.tets[4 * t];
     if (v[0] < 0) continue;
     for (int f = 0; f < 4; ++f) {
@@ -31,7 +40,6 @@ std::vector<char> constrained_face_flags(const TetMesh& m) {
           m.adj[4 * t + f] < 0 || (on[a] && on[b] && on[c] && cf.count(face_key(a, b, c)) > 0);
     }
   }
-  return flags;
 }
 
 Vec3 CellIntegrals::centroid(const double* z) const {

@@ -62,5 +62,7 @@ void dual_tet_pieces(const TetMesh& mesh, int t, const Vec3& cc, const std::vect
 
 // 4*#T flags: face f of tet t is a constrained triangle (boundary or interface).
 std::vector<char> constrained_face_flags(const TetMesh& mesh);
+// The same into `flags`, reusing its array.
+void constrained_face_flags(const TetMesh& mesh, std::vector<char>& flags);
 
 }  // namespace cvtmesh

@@ -23,9 +23,8 @@ constexpr int kParallelStarTets = 200000;
 // one pass in tet order, for any number of threads (this runs once per Lloyd iteration and per
 // smoothing pass).
 template <class Wanted>
-VertexTets build_stars(const TetMesh& mesh, Wanted wanted) {
+void build_stars(const TetMesh& mesh, Wanted wanted, VertexTets& vt) {
   const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
-  VertexTets vt;
   vt.offset.assign(static_cast<std::size_t>(nv) + 1, 0);
 #ifdef _OPENMP
   const int nb_blocks = nt >= kParallelStarTets ? std::min(omp_get_max_threads(), 8) : 1;
@@ -68,19 +67,28 @@ VertexTets build_stars(const TetMesh& mesh, Wanted wanted) {
         if (wanted(tv[k])) vt.tets[fill[tv[k]]++] = t;
     }
   }
-  return vt;
 }
 
 }  // namespace
 
 VertexTets vertex_tets(const TetMesh& mesh) {
-  return build_stars(mesh, [](int) { return true; });
+  VertexTets vt;
+  vertex_tets(mesh, vt);
+  return vt;
+}
+
+void vertex_tets(const TetMesh& mesh, VertexTets& out) {
+  build_stars(
+      mesh, [](int) { return true; }, out);
 }
 
 VertexTets vertex_tets_of(const TetMesh& mesh, const std::vector<int>& vertices) {
   std::vector<char> wanted(mesh.nb_vertices(), 0);
   for (int v : vertices) wanted[v] = 1;
-  return build_stars(mesh, [&wanted](int v) { return wanted[v] != 0; });
+  VertexTets vt;
+  build_stars(
+      mesh, [&wanted](int v) { return wanted[v] != 0; }, vt);
+  return vt;
 }
 
 double shortest_star_edge(const TetMesh& mesh, const int* b, const int* e, int v) {

@@ -20,6 +20,9 @@ struct VertexTets {
 // The star of every vertex: the live tets (tets[4t] >= 0) incident to it. O(#V + #T).
 // Stays valid while only coordinates change; rebuild it after a change of connectivity.
 VertexTets vertex_tets(const TetMesh& mesh);
+// The same into `out`, reusing its arrays (the Lloyd iteration rebuilds the stars every
+// iteration: at 10M tets ~170 MB, paged in afresh each time otherwise).
+void vertex_tets(const TetMesh& mesh, VertexTets& out);
 
 // The stars of `vertices` only (the other vertices' are empty): one pass over the tets, for a few
 // vertices of a large mesh.
