@@ -5,15 +5,18 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <string>
 #include <tuple>
 #include <utility>
 
+#include "core/cvt/lloyd3_check.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/geometry/vec3.h"
 #include "core/io/read_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
+#include "core/util/error.h"
 #include "tests/support/test_meshes.h"
 #include "tests/support/thread_counts.h"
 
@@ -269,6 +272,37 @@ TEST(Lloyd3, SharedCellBuffersGiveTheSameMeshAsOwnBuffers) {
         std::pair{&own_small, &shared_small_again}}) {
     EXPECT_EQ(own->xyz, other->xyz);  // bitwise
     EXPECT_EQ(own->tets, other->tets);
+  }
+}
+
+// The check after every Lloyd move (lloyd3_check.h): a valid mesh passes; one whose interior
+// vertex lost all its tets (a hole) is refused, naming the vertex, whatever the thread count.
+TEST(Lloyd3, CheckRefusesAnInteriorVertexInNoTet) {
+  const MeshData d = testing::cube_sphere(0.2, 0.15);
+  EXPECT_NO_THROW(verify_lloyd3_mesh(d.tet, false));
+  EXPECT_NO_THROW(verify_lloyd3_mesh(d.tet, true));
+  int v = -1;
+  for (int w = 0; w < d.tet.nb_vertices() && v < 0; ++w)
+    if (d.tet.vclass[w].dim == 3) v = w;
+  ASSERT_GE(v, 0);
+  TetMesh m = d.tet;
+  for (int t = 0; t < m.nb_tets(); ++t)
+    for (int k = 0; k < 4; ++k)
+      if (m.tets[4 * t + k] == v) {
+        m.tets[4 * t] = -1;
+        break;
+      }
+  testing::ThreadCountGuard guard;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    try {
+      verify_lloyd3_mesh(m, false);
+      ADD_FAILURE() << "no error with " << threads << " threads";
+    } catch (const InvariantError& e) {
+      EXPECT_NE(std::string(e.what()).find("interior vertex " + std::to_string(v) + " outside"),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 
