@@ -56,7 +56,10 @@ MeshCheck check_mesh(const TetMesh& m) {
     constrained.emplace(face_key(fv[0], fv[1], fv[2]), static_cast<int>(constrained.size()));
     for (int k = 0; k < 3; ++k) on_constraint[fv[k]] = 1;
   }
-  std::vector<char> found(constrained.size(), 0);
+  // How many live tets have each constrained triangle as a face, and how many of those have no
+  // tet behind it: 1 and 1 on the boundary, 2 and 0 on an interface; anything else is two tets
+  // overlapping on it (or unlinked).
+  std::vector<int> holders(constrained.size(), 0), open_holders(constrained.size(), 0);
   // Orientation, the costly part, in parallel (a flag per tet: the report stays in tet order).
   std::vector<char> positive(nt, 1);
 #pragma omp parallel for schedule(static, 1024)
@@ -84,6 +87,17 @@ MeshCheck check_mesh(const TetMesh& m) {
     }
     return true;
   };
+  // Two positively oriented tets sharing a face lie on its two sides exactly when they list it
+  // in opposite cyclic orders (kTetFace orients every face the same way around its tet): a
+  // combinatorial test, no predicate.
+  auto opposite_sides = [&](const int* tv, int f, int t2, int f2) {
+    const int* tv2 = &m.tets[4 * t2];
+    const int a[3] = {tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]};
+    const int b[3] = {tv2[kTetFace[f2][0]], tv2[kTetFace[f2][1]], tv2[kTetFace[f2][2]]};
+    for (int i = 0; i < 3; ++i)
+      if (b[i] == a[0]) return b[(i + 1) % 3] == a[2] && b[(i + 2) % 3] == a[1];
+    return false;
+  };
   std::vector<char> suspect(nt, 0);
 #pragma omp parallel for schedule(static, 1024)
   for (int t = 0; t < nt; ++t) {
@@ -97,15 +111,18 @@ MeshCheck check_mesh(const TetMesh& m) {
     }
     for (int f = 0; f < 4; ++f) {
       const int ci = constraint_of(tv, f);
-      if (ci >= 0) std::atomic_ref<char>(found[ci]).store(1, std::memory_order_relaxed);
       const int o = m.adj[4 * t + f];
+      if (ci >= 0) {
+        std::atomic_ref<int>(holders[ci]).fetch_add(1, std::memory_order_relaxed);
+        if (o < 0) std::atomic_ref<int>(open_holders[ci]).fetch_add(1, std::memory_order_relaxed);
+      }
       if (o < 0) {
         if (ci < 0) suspect[t] = 1;
         continue;
       }
       const int t2 = o / 4, f2 = o % 4;
       if (o >= 4 * nt || m.tets[4 * t2] < 0 || m.adj[o] != 4 * t + f || !same_face(tv, f, t2, f2) ||
-          (m.tet_region[t] != m.tet_region[t2] && ci < 0))
+          !opposite_sides(tv, f, t2, f2) || (m.tet_region[t] != m.tet_region[t2] && ci < 0))
         suspect[t] = 1;
     }
   }
@@ -145,6 +162,10 @@ MeshCheck check_mesh(const TetMesh& m) {
         ++r.nb_bad_adjacency;
         problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
                        " are adjacent but do not share the face");
+      } else if (!opposite_sides(tv, f, t2, f2)) {
+        ++r.nb_bad_adjacency;
+        problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
+                       " overlap: they stand on the same side of their common face");
       }
       if (m.tet_region[t] != m.tet_region[t2] && ci < 0) {
         ++r.nb_open_faces;
@@ -154,7 +175,15 @@ MeshCheck check_mesh(const TetMesh& m) {
     }
   }
   for (const auto& [k, i] : constrained)
-    if (!found[i]) {
+    if (holders[i] > 2 || (holders[i] == 2 && open_holders[i] != 0)) {
+      ++r.nb_bad_adjacency;
+      problem(r, "boundary triangle (" + std::to_string(k[0]) + "," + std::to_string(k[1]) + "," +
+                     std::to_string(k[2]) + ") is a face of " + std::to_string(holders[i]) +
+                     " tets" + (holders[i] == 2 ? " that are not adjacent" : "") +
+                     " (tets overlap there)");
+    }
+  for (const auto& [k, i] : constrained)
+    if (!holders[i]) {
       ++r.nb_dangling_constraints;
       problem(r, "boundary triangle (" + std::to_string(k[0]) + "," + std::to_string(k[1]) + "," +
                      std::to_string(k[2]) + ") is not a face of any tet");

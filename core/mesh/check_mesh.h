@@ -19,9 +19,10 @@ struct MeshCheck {
 };
 
 // Checks a tet mesh: vertex ids in range, no dead tet referenced, adjacency symmetric and
-// consistent with the vertex ids (must be built), every live tet positively oriented (orient3d),
-// every boundary face of the tet complex is a constrained triangle and every constrained
-// triangle is a face of the complex (boundary closed, interfaces present).
+// consistent with the vertex ids (must be built), adjacent tets on the two sides of their common
+// face (not overlapping), every live tet positively oriented (orient3d), every boundary face of
+// the tet complex is a constrained triangle and every constrained triangle is a face of the
+// complex (boundary closed, interfaces present) -- of one tet, or of two adjacent ones.
 MeshCheck check_mesh(const TetMesh& mesh);
 
 // The largest id of a live tet that is not positively oriented (exact orient3d), -1 if none;
