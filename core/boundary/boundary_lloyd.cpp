@@ -46,6 +46,24 @@ std::pair<double, double> star_minima(const TetMesh& m, const VertexTets& star,
   return {q, t};
 }
 
+// The paper's D over the interior vertices (vclass dim 3, with tets) of the configuration whose
+// cells `cc` are, with H at the vertices from the same evaluation: the mean of |c - z|^2 / H^2
+// (the full move to the centroid, as the Lloyd iteration's D).
+double interior_D(const TetMesh& m, const CellCentroids& cc, const std::vector<double>& H) {
+  double sum = 0;
+  long n = 0;
+  for (int v = 0; v < m.nb_vertices(); ++v) {
+    if (v >= static_cast<int>(m.vclass.size()) || m.vclass[v].dim != 3 || !(cc.mass[v] > 0))
+      continue;
+    const double* z = m.point(v);
+    const double* c = &cc.centroid[3 * static_cast<std::size_t>(v)];
+    if (!std::isfinite(c[0] + c[1] + c[2])) continue;
+    sum += dist2(z, c) / (H[v] * H[v]);
+    ++n;
+  }
+  return n ? sum / n : 0;
+}
+
 }  // namespace
 
 BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
@@ -58,6 +76,7 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
   Lloyd3CellBuffers& buffers = o.cell_buffers ? *o.cell_buffers : own_buffers;
   buffers.hints.assign(mesh.nb_vertices(), -1);  // hints of another sizing field are not ours
   CellCentroids cc = voronoi_centroids_3d(mesh, sizing, buffers);
+  double cc_D = interior_D(mesh, cc, buffers.H);
   stats.energy.push_back(cc.energy);
   const double h = mean_edge_length(mesh);
   double omega = o.relaxation;
@@ -141,6 +160,7 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
       continue;
     }
     cc = std::move(next);
+    cc_D = interior_D(mesh, cc, buffers.H);
     stats.energy.push_back(cc.energy);
     stats.nb_moved += moved;
     stats.nb_refused += refused;
@@ -149,6 +169,7 @@ BoundaryLloydStats boundary_lloyd(TetMesh& mesh, const BoundaryModel& model,
     const double D = nb_boundary ? sum_move2 / (nb_boundary * h * h) : 0;
     if (D < o.tolerance) break;
   }
+  stats.interior_D = cc_D;
   return stats;
 }
 

@@ -48,6 +48,10 @@ struct BoundaryLloydStats {
   long nb_moved = 0;           // accepted boundary vertex moves, over the accepted rounds
   long nb_refused = 0;         // boundary moves refused by plan_boundary_move
   std::vector<double> energy;  // CVT energy at the start and after each accepted round
+  // The Lloyd iteration's D (lloyd3.h: the mean squared move of the interior vertices to their
+  // centroids, relative to H) of the mesh returned: below the Lloyd tolerance, a Lloyd run after
+  // this one would stop after its first iteration.
+  double interior_D = 0;
 };
 
 // mesh: valid, adjacency built; valid (compacted, constrained triangles kept by vertex ids and

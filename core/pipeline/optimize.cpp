@@ -561,10 +561,16 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
     OptimizeOptions again = o;
     again.max_iterations =
         std::min(o.max_iterations, r.nb_boundary_removed > 0 ? kCoarsenedRelloydIterations : 30);
-    OptimizeResult r2;
-    run_lloyd3(mesh, again, r2, &cells);
-    r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
-    r.seconds_lloyd += r2.seconds_lloyd;
+    // Not when the constrained CVT's own interior moves left the interior converged (its last
+    // cells give the Lloyd iteration's D below the tolerance): the Lloyd run would stop after one
+    // step of that size, for the cost of its set-up (sizing field, sorts, full check) and one
+    // evaluation of every cell (7.6-9.8 s at 10M tets).
+    if (!(st.interior_D < again.tolerance)) {
+      OptimizeResult r2;
+      run_lloyd3(mesh, again, r2, &cells);
+      r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
+      r.seconds_lloyd += r2.seconds_lloyd;
+    }
   }
   cells = Lloyd3CellBuffers{};
   budget.tolerance = 0.9 * o.volume_tolerance;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 
 #include "core/boundary/boundary_lloyd.h"
@@ -15,6 +16,7 @@
 #include "core/boundary/discrete_boundary.h"
 #include "core/boundary/smooth_boundary_maxmin.h"
 #include "core/boundary/verify_free_boundary.h"
+#include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/verify_mesh.h"
@@ -179,6 +181,27 @@ TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
   ASSERT_GE(s.energy.size(), 3u);
   for (std::size_t i = 1; i < s.energy.size(); ++i) EXPECT_LE(s.energy[i], s.energy[i - 1]) << i;
   EXPECT_LT(s.energy.back(), 0.99 * s.energy.front());
+}
+
+// The pipeline skips its second Lloyd run when the constrained CVT reports the interior
+// converged (interior_D below the tolerance): that D is the one the Lloyd iteration's first
+// step reports on the returned mesh under the same sizing field.
+TEST(BoundaryLloyd, ItsInteriorDIsTheLloydIterationsFirstD) {
+  TetMesh m = testing::unoptimized_cube_sphere();
+  const BoundaryModel b = make_discrete_boundary(m);
+  const auto sizing =
+      std::shared_ptr<const SizingField3>(make_uniform_sizing3(mean_edge_length(m)).release());
+  BoundaryLloydOptions o;
+  o.max_rounds = 2;
+  o.hausdorff = 1e-3 * b.diagonal;
+  const BoundaryLloydStats st = boundary_lloyd(m, b, *sizing, o);
+  ASSERT_GT(st.interior_D, 0);
+  Lloyd3Options lo;
+  lo.sizing = sizing;
+  lo.lloyd.max_iterations = 1;
+  double D = -1;
+  lloyd_optimize_3d(m, lo, [&](const LloydStep& s) { D = s.D; });
+  EXPECT_NEAR(st.interior_D, D, 1e-9 * D);
 }
 
 // The boundary targets are projected in parallel, the moves made in vertex order: the same mesh,
