@@ -89,7 +89,7 @@ MeshCheck check_mesh(const TetMesh& m) {
   };
   // Two positively oriented tets sharing a face lie on its two sides exactly when they list it
   // in opposite cyclic orders (kTetFace orients every face the same way around its tet): a
-  // combinatorial test, no predicate.
+  // combinatorial test, no predicate (not made next to an inverted tet, reported as such).
   auto opposite_sides = [&](const int* tv, int f, int t2, int f2) {
     const int* tv2 = &m.tets[4 * t2];
     const int a[3] = {tv[kTetFace[f][0]], tv[kTetFace[f][1]], tv[kTetFace[f][2]]};
@@ -122,7 +122,8 @@ MeshCheck check_mesh(const TetMesh& m) {
       }
       const int t2 = o / 4, f2 = o % 4;
       if (o >= 4 * nt || m.tets[4 * t2] < 0 || m.adj[o] != 4 * t + f || !same_face(tv, f, t2, f2) ||
-          !opposite_sides(tv, f, t2, f2) || (m.tet_region[t] != m.tet_region[t2] && ci < 0))
+          (positive[t] && positive[t2] && !opposite_sides(tv, f, t2, f2)) ||
+          (m.tet_region[t] != m.tet_region[t2] && ci < 0))
         suspect[t] = 1;
     }
   }
@@ -162,7 +163,7 @@ MeshCheck check_mesh(const TetMesh& m) {
         ++r.nb_bad_adjacency;
         problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
                        " are adjacent but do not share the face");
-      } else if (!opposite_sides(tv, f, t2, f2)) {
+      } else if (positive[t] && positive[t2] && !opposite_sides(tv, f, t2, f2)) {
         ++r.nb_bad_adjacency;
         problem(r, "tets " + std::to_string(t) + " and " + std::to_string(t2) +
                        " overlap: they stand on the same side of their common face");

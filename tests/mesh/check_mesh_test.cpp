@@ -35,6 +35,8 @@ TEST(CheckMesh, DetectsInversionOpenBoundaryAndBrokenAdjacency) {
   std::swap(m.tets[0], m.tets[1]);
   build_adjacency(m);
   EXPECT_EQ(check_mesh(m).nb_inverted, 1);
+  // Reported as inverted, not also as overlapping its neighbours.
+  EXPECT_EQ(check_mesh(m).nb_bad_adjacency, 0);
 
   m = testing::cube6();
   m.tris.resize(m.tris.size() - 3);
