@@ -1,6 +1,7 @@
 #include "core/mesh/check_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <string>
 #include <unordered_map>
@@ -202,6 +203,9 @@ MeshCheck check_mesh(const TriMesh2& m) {
     return r;
   }
   std::unordered_set<EdgeKey, EdgeKeyHash> constrained, seen;
+  // Per constrained edge: the live triangles on it and those of them with nothing behind it (1
+  // and 1 on the boundary, 2 and 0 on an interface; else triangles overlap there).
+  std::unordered_map<EdgeKey, std::array<int, 2>, EdgeKeyHash> held;
   for (int e = 0; e < m.nb_edges(); ++e) {
     const int a = m.edges[2 * e], b = m.edges[2 * e + 1];
     if (a < 0 || a >= nv || b < 0 || b >= nv) {
@@ -220,7 +224,8 @@ MeshCheck check_mesh(const TriMesh2& m) {
       problem(r, "triangle " + std::to_string(t) + " has a vertex id out of range");
       continue;
     }
-    if (orient2d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2])) <= 0) {
+    const bool positive = orient2d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2])) > 0;
+    if (!positive) {
       ++r.nb_inverted;
       problem(r, "triangle " + std::to_string(t) + " is inverted or flat");
     }
@@ -228,6 +233,11 @@ MeshCheck check_mesh(const TriMesh2& m) {
       const EdgeKey key = edge_key(tv[(e + 1) % 3], tv[(e + 2) % 3]);
       seen.insert(key);
       const int o = m.adj[3 * t + e];
+      if (constrained.count(key)) {
+        auto& h = held[key];
+        ++h[0];
+        if (o < 0) ++h[1];
+      }
       if (o < 0) {
         if (!constrained.count(key)) {
           ++r.nb_open_faces;
@@ -246,6 +256,13 @@ MeshCheck check_mesh(const TriMesh2& m) {
         ++r.nb_bad_adjacency;
         problem(r, "triangles " + std::to_string(t) + " and " + std::to_string(t2) +
                        " are adjacent but do not share the edge");
+      } else if (positive && tv2[(e2 + 1) % 3] == tv[(e + 1) % 3] &&
+                 orient2d(m.point(tv2[0]), m.point(tv2[1]), m.point(tv2[2])) > 0) {
+        // Two positive triangles list their common edge in opposite directions when they lie on
+        // its two sides.
+        ++r.nb_bad_adjacency;
+        problem(r, "triangles " + std::to_string(t) + " and " + std::to_string(t2) +
+                       " overlap: they lie on the same side of their common edge");
       }
       if (m.tri_region[t] != m.tri_region[t2] && !constrained.count(key)) {
         ++r.nb_open_faces;
@@ -253,6 +270,13 @@ MeshCheck check_mesh(const TriMesh2& m) {
       }
     }
   }
+  for (const auto& [k, h] : held)
+    if (h[0] > 2 || (h[0] == 2 && h[1] != 0)) {
+      ++r.nb_bad_adjacency;
+      problem(r, "boundary edge (" + std::to_string(k[0]) + "," + std::to_string(k[1]) +
+                     ") is an edge of " + std::to_string(h[0]) + " triangles" +
+                     (h[0] == 2 ? " that are not adjacent" : "") + " (triangles overlap there)");
+    }
   for (const EdgeKey& k : constrained)
     if (!seen.count(k)) {
       ++r.nb_dangling_constraints;

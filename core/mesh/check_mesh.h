@@ -28,7 +28,9 @@ MeshCheck check_mesh(const TetMesh& mesh);
 // The largest id of a live tet that is not positively oriented (exact orient3d), -1 if none;
 // in parallel (the result does not depend on the thread count). Vertex ids must be in range.
 int last_non_positive_tet(const TetMesh& mesh);
-// The same for a planar triangle mesh (counter-clockwise triangles, boundary edges).
+// The same for a planar triangle mesh (counter-clockwise triangles, boundary edges; adjacent
+// triangles on the two sides of their common edge, a boundary edge an edge of one triangle or of
+// two adjacent ones).
 MeshCheck check_mesh(const TriMesh2& mesh);
 
 }  // namespace cvtmesh

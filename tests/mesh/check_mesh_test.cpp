@@ -120,6 +120,37 @@ TEST(CheckMesh, SquareOfTwoTrianglesIsValidAndInversionIsDetected) {
   std::swap(m.tris[1], m.tris[2]);
   build_adjacency2(m);
   EXPECT_EQ(check_mesh(m).nb_inverted, 1);
+  EXPECT_EQ(check_mesh(m).nb_bad_adjacency, 0);  // inverted, not also overlapping
+}
+
+// The 2D counterparts of the overlap checks: two positive triangles on the same side of their
+// common edge, and a boundary edge held by two triangles that are not adjacent.
+TEST(CheckMesh, DetectsOverlappingTrianglesIn2D) {
+  TriMesh2 m;
+  m.xy = {0, 0, 1, 0, 0.3, 1, 0.6, 0.5};
+  m.tris = {0, 1, 2, 0, 1, 3};  // both counter-clockwise, 2 and 3 above (0, 1)
+  m.tri_region = {1, 1};
+  m.edges = {0, 1, 1, 2, 2, 0, 1, 3, 3, 0};
+  m.edge_curve = {1, 1, 1, 1, 1};
+  m.vclass.assign(4, VertexClass{1, 1});
+  build_adjacency2(m);
+  MeshCheck c = check_mesh(m);
+  EXPECT_FALSE(c.ok);
+  EXPECT_GE(c.nb_bad_adjacency, 1);
+  bool named = false;
+  for (const std::string& p : c.problems) named |= p.find("overlap") != std::string::npos;
+  EXPECT_TRUE(named);
+
+  TriMesh2 q = testing::square2();
+  for (int& a : q.adj) a = -1;
+  q.edges.insert(q.edges.end(), {0, 2});  // the diagonal, held by both triangles, unlinked
+  q.edge_curve.push_back(5);
+  c = check_mesh(q);
+  EXPECT_FALSE(c.ok);
+  named = false;
+  for (const std::string& p : c.problems)
+    named |= p.find("is an edge of 2 triangles that are not adjacent") != std::string::npos;
+  EXPECT_TRUE(named);
 }
 
 }  // namespace
