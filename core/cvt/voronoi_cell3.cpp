@@ -11,12 +11,6 @@
 
 namespace cvtmesh {
 
-std::vector<char> constrained_face_flags(const TetMesh& m) {
-  std::vector<char> flags;
-  constrained_face_flags(m, flags);
-  return flags;
-}
-
 void constrained_face_flags(const TetMesh& m, std::vector<char>& flags) {
   // Only a face whose three vertices are on constrained triangles can be one: hash those only.
   std::unordered_set<FaceKey, FaceKeyHash> cf;

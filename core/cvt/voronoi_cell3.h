@@ -60,9 +60,8 @@ bool dual_voronoi_cell(const TetMesh& mesh, const CellMesh& cells, int v, CellIn
 void dual_tet_pieces(const TetMesh& mesh, int t, const Vec3& cc, const std::vector<double>* rho,
                      const double* grad, double* out);
 
-// 4*#T flags: face f of tet t is a constrained triangle (boundary or interface).
-std::vector<char> constrained_face_flags(const TetMesh& mesh);
-// The same into `flags`, reusing its array.
+// 4*#T flags into `flags` (its array reused): face f of tet t is a constrained triangle (boundary
+// or interface).
 void constrained_face_flags(const TetMesh& mesh, std::vector<char>& flags);
 
 }  // namespace cvtmesh

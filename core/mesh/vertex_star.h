@@ -7,10 +7,7 @@
 
 namespace cvtmesh {
 
-using VertexStar = VertexTets;
-inline VertexStar build_vertex_star(const TetMesh& mesh) {
-  return vertex_tets(mesh);
-}
+using VertexStar = VertexTets;  // built by vertex_tets
 
 // The vertices sharing an edge with v (sorted, unique).
 std::vector<int> vertex_neighbors(const TetMesh& mesh, const VertexStar& star, int v);
