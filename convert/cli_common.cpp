@@ -42,6 +42,13 @@ void apply_global_options() {
     setenv("OMP_NUM_THREADS", std::to_string(global_opts().threads).c_str(), 1);
 }
 
+std::function<std::unique_ptr<PartExchange>()>& exchange_factory() {
+  static std::function<std::unique_ptr<PartExchange>()> f = [] {
+    return std::make_unique<SerialExchange>();
+  };
+  return f;
+}
+
 std::ostream& info() {
   static std::ostream sink(nullptr);  // no buffer: writes are dropped
   return global_opts().quiet ? sink : std::cerr;

@@ -3,10 +3,12 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "core/distributed/part_exchange.h"
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/pipeline/optimize.h"
@@ -41,6 +43,10 @@ GlobalOpts& global_opts();
 void add_global_options(CLI::App& app);
 // Applies --threads (before anything reads the thread count).
 void apply_global_options();
+// The ranks of a partitioned optimization (`optimize --parts`): this process alone
+// (SerialExchange: the parts in turn) unless the MPI front end (convert/mpi/) set its own.
+std::function<std::unique_ptr<PartExchange>()>& exchange_factory();
+
 // stderr, or a sink under -q: for progress, notes and "wrote ..." lines (not for errors).
 std::ostream& info();
 

@@ -1,4 +1,5 @@
 // cvtmesh optimize IN -o OUT [--method M] [the options of core/pipeline/option_schema.h].
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -12,10 +13,69 @@
 #include "core/io/gmsh_mid_edge_projector.h"
 #include "core/io/place_mid_edge_nodes.h"
 #include "core/io/gmsh_session.h"
+#include "core/distributed/optimize_partitioned.h"
 #include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize.h"
 
 namespace cvtmesh::cli {
+
+namespace {
+
+// A hash of the mesh every rank read (coordinates and tets), to refuse ranks that differ.
+std::vector<char> mesh_fingerprint(const TetMesh& m) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](const void* data, std::size_t n) {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  mix(m.xyz.data(), m.xyz.size() * sizeof(double));
+  mix(m.tets.data(), m.tets.size() * sizeof(int));
+  const char* p = reinterpret_cast<const char*>(&h);
+  return std::vector<char>(p, p + sizeof h);
+}
+
+// `optimize --parts P`: the partitioned optimization (core/distributed/), the parts on the ranks
+// of exchange_factory() (this process alone, or MPI's under cvtmesh-mpi). Rank 0 prints and
+// writes.
+void run_partitioned(MeshData& d, OptimizeOptions& opt, const PartitionOptions& po,
+                     PartExchange& ex) {
+  if (d.dim != 3)
+    throw InputError("optimize --parts: the partitioned optimization needs a 3D tet mesh");
+  const std::vector<std::vector<char>> prints = ex.all_gather(mesh_fingerprint(d.tet));
+  for (const auto& f : prints)
+    if (f != prints.front())
+      throw InputError("optimize --parts: the ranks read different meshes from the input");
+  if (!opt.fix_boundary && ex.rank() == 0)
+    info() << "cvtmesh: note: the partitioned optimization keeps the boundary fixed\n";
+  const PartitionedResult r = optimize_partitioned(d.tet, opt, po, ex);
+  if (ex.rank() != 0) return;
+  for (std::size_t k = 0; k < r.rounds.size(); ++k) {
+    const PartitionRound& pr = r.rounds[k];
+    std::string sizes;
+    for (int n : pr.part_tets) sizes += (sizes.empty() ? "" : ", ") + std::to_string(n);
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "round %zu: %zu parts (%s tets), %d interface vertices, %d cut faces (%d on "
+                  "the previous interface), %.2f s, Q_min %.4f, avg %.4f\n",
+                  k + 1, pr.part_tets.size(), sizes.c_str(), pr.nb_interface, pr.nb_cut_faces,
+                  pr.nb_avoided_cut, pr.seconds, pr.after.q_min, pr.after.q_avg);
+    info() << line;
+  }
+  info() << "cvtmesh: " << r.nb_frozen_every_round
+         << " interior vertices were frozen (on an interface) in every round\n";
+  for (const auto& note : r.notes) info() << "cvtmesh: note: " << note << "\n";
+  if (global_opts().quiet) return;
+  QualityTable t;
+  QualityStats before = r.before, after = r.after;
+  before.label = "input";
+  after.label = opt.method + " x " + std::to_string(po.parts) + " parts";
+  after.extra.push_back({"rounds", static_cast<double>(po.rounds)});
+  after.extra.push_back({"seconds", r.seconds});
+  t.columns = {before, after};
+  std::cerr << t.to_text();
+}
+
+}  // namespace
 
 void register_optimize(CLI::App& app) {
   auto in = std::make_shared<InputOpts>();
@@ -24,6 +84,8 @@ void register_optimize(CLI::App& app) {
   auto strict = std::make_shared<bool>(false);
   auto report = std::make_shared<std::string>();
   auto format = std::make_shared<std::string>("text");
+  auto partition = std::make_shared<PartitionOptions>();
+  partition->parts = 0;
   CLI::App* c = app.add_subcommand(
       "optimize", "optimize a mesh (CVT/Lloyd CVDT, sliver swaps, classical baselines)");
   add_input(c, *in);
@@ -43,12 +105,25 @@ void register_optimize(CLI::App& app) {
   c->add_flag("--strict", *strict,
               "exit with code 6 (after writing the output) when the method stopped at the "
               "iteration cap, fell back to local operations, or the input was kept");
+  c->add_option("--parts", partition->parts,
+                "partitioned optimization (docs/scaling.md): cut the tets into this many parts "
+                "(METIS), optimize each alone with its interface and the boundary fixed, put "
+                "them back; under `mpirun -n P cvtmesh-mpi` the parts run on the P ranks")
+      ->check(CLI::Range(1, 1 << 20));
+  c->add_option("--rounds", partition->rounds,
+                "partitioned optimization: rounds of cut, optimize, merge, each cutting away "
+                "from the previous interfaces (default 2)")
+      ->check(CLI::Range(1, 100));
   c->add_flag_callback(
       "--allow-worse", [opt] { opt->never_worse = false; },
       "keep the method's result even if its Q_min or dihedral angles are worse than the "
       "input's (default: fall back to the polish alone, or keep the input)");
   commands().push_back(
-      {c, [in, out, opt, strict, report, format] {
+      {c, [in, out, opt, strict, report, format, partition] {
+         // The ranks of a partitioned run; only rank 0 prints and writes.
+         const std::unique_ptr<PartExchange> ranks =
+             partition->parts > 0 ? exchange_factory()() : nullptr;
+         if (ranks && ranks->rank() != 0) global_opts().quiet = true;
          const bool quiet = global_opts().quiet;
          // The progress lines (convert/progress_display.h): the one place they are drawn.
          auto progress = std::make_shared<ProgressDisplay>(ProgressDisplay::for_stderr());
@@ -76,8 +151,30 @@ void register_optimize(CLI::App& app) {
          MeshData d = read_mesh(in->path, in->to_read_options());
          progress->finish();
          // A bad output location fails now, not after the optimization.
-         check_can_write(out->path, out->to_write_options(d, in->path));
-         if (!report->empty()) check_directory_writable(*report);
+         const bool writer = !ranks || ranks->rank() == 0;
+         if (writer) check_can_write(out->path, out->to_write_options(d, in->path));
+         if (writer && !report->empty()) check_directory_writable(*report);
+         if (ranks) {
+           if (!report->empty() || *format == "json")
+             throw InputError(
+                 "optimize --parts: --report and --format json are not available "
+                 "for the partitioned optimization");
+           run_partitioned(d, *opt, *partition, *ranks);
+           if (writer && d.model().high_order.order == 2) {
+             MidEdgePlacement& p = d.model().high_order.placed;
+             p = place_mid_edge_nodes(d.tet,
+                                      cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
+             info() << "cvtmesh: note: " << mid_edge_summary(p) << "\n";
+           }
+           cad.reset();
+           if (!writer) return kExitOk;
+           progress->begin("writing", out->path);
+           write_mesh(d, out->path, out->to_write_options(d, in->path));
+           progress->done();
+           info() << "cvtmesh: wrote " << out->path << " (" << partition->parts << " parts, "
+                  << partition->rounds << " rounds)\n";
+           return kExitOk;
+         }
          opt->progress = [progress](const OptimizeProgress& p) { progress->update(p); };
          OptimizeResult r = optimize(d, *opt);
          // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.

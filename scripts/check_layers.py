@@ -23,6 +23,7 @@ BELOW = {
     "smoothing": ["cvt"],
     "boundary": ["smoothing"],
     "pipeline": ["smoothing", "boundary"],
+    "distributed": ["pipeline"],
     "io": ["quality"],
 }
 # Third-party headers a layer may use (prefix match); anything else with <...> that is not the
@@ -33,6 +34,7 @@ THIRD_PARTY = {
     "delaunay": ["tetgen.h"],
     "quality": ["nlohmann/", "Eigen/"],  # Eigen: the FE measures (issue 16)
     "boundary": ["CGAL/"],
+    "distributed": ["metis.h"],
 }
 FORBIDDEN = ["FL/", "onelab", "GmshSocket", "gmsh.h_cwrap", "CLI/", "pybind11"]
 STD = re.compile(r"^[a-z_0-9]+(\.h)?$")  # <vector>, <cmath>, <omp.h>, <dlfcn.h>, ...

@@ -10,6 +10,7 @@ PKGS=(
   libgtest-dev libgmock-dev
   libcli11-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev
   libcgal-dev python3-netgen python3-numpy
+  libmetis-dev libopenmpi-dev openmpi-bin
   pybind11-dev python3-dev python3 python3-meshio python3-scipy
   xvfb xauth xdotool imagemagick librsvg2-bin
   clang libclang-rt-14-dev

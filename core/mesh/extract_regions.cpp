@@ -9,13 +9,20 @@
 namespace cvtmesh {
 
 RegionSubmesh extract_regions(const TetMesh& m, const std::vector<int>& regions) {
+  std::vector<char> selected(m.nb_tets(), 0);
+  for (int t = 0; t < m.nb_tets(); ++t)
+    selected[t] = std::find(regions.begin(), regions.end(), m.tet_region[t]) != regions.end();
+  return extract_tets(m, selected);
+}
+
+RegionSubmesh extract_tets(const TetMesh& m, const std::vector<char>& selected) {
   RegionSubmesh r;
   const int nt = m.nb_tets(), nv = m.nb_vertices();
   r.selected_tet.assign(nt, 0);
   std::vector<char> in_sel(nv, 0), in_other(nv, 0);
   for (int t = 0; t < nt; ++t) {
     if (m.tets[4 * t] < 0) continue;
-    const bool sel = std::find(regions.begin(), regions.end(), m.tet_region[t]) != regions.end();
+    const bool sel = selected[t] != 0;
     r.selected_tet[t] = sel;
     for (int k = 0; k < 4; ++k) (sel ? in_sel : in_other)[m.tets[4 * t + k]] = 1;
   }

@@ -24,4 +24,8 @@ struct RegionSubmesh {
 // pinned); entities, groups and periodic links are copied.
 RegionSubmesh extract_regions(const TetMesh& mesh, const std::vector<int>& regions);
 
+// The same for any selection of tets (selected[t] != 0; #T entries): a part of a partition
+// (core/distributed/), whose interface with the other parts is pinned the same way.
+RegionSubmesh extract_tets(const TetMesh& mesh, const std::vector<char>& selected);
+
 }  // namespace cvtmesh

@@ -9,7 +9,11 @@
 
 namespace cvtmesh {
 
-void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) {
+namespace {
+
+// The parent vertex of each vertex of `sub` (appending the new ones to parent); moves the parent's
+// vertices to their optimized positions.
+std::vector<int> merge_vertices(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) {
   const int ns = static_cast<int>(x.to_parent.size());
   // Each vertex of the result: a parent vertex (its tag i + 1) or a new one (tag 0), appended.
   std::vector<int> to_parent(sub.nb_vertices(), -1);
@@ -42,23 +46,12 @@ void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) 
     parent.vclass.push_back(sub.vclass[v]);
     if (!parent.node_tags.empty()) parent.node_tags.push_back(0);
   }
-  // Tets: the unselected ones in their order, then the sub's.
-  std::vector<int> tets, region;
-  std::vector<std::size_t> tags;
-  const bool with_tags = !parent.tet_tags.empty();
-  for (int t = 0; t < parent.nb_tets(); ++t) {
-    if (x.selected_tet[t] || parent.tets[4 * t] < 0) continue;
-    tets.insert(tets.end(), &parent.tets[4 * t], &parent.tets[4 * t] + 4);
-    region.push_back(parent.tet_region[t]);
-    if (with_tags) tags.push_back(parent.tet_tags[t]);
-  }
-  for (int t = 0; t < sub.nb_tets(); ++t) {
-    if (sub.tets[4 * t] < 0) continue;
-    for (int k = 0; k < 4; ++k) tets.push_back(to_parent[sub.tets[4 * t + k]]);
-    region.push_back(sub.tet_region[t]);
-    if (with_tags) tags.push_back(t < static_cast<int>(sub.tet_tags.size()) ? sub.tet_tags[t] : 0);
-  }
-  // Triangles: the parent's stay; the sub must carry the same ones (its boundary is kept).
+  return to_parent;
+}
+
+// Triangles: the parent's stay; the sub must carry the same ones (its boundary is kept).
+void check_carried_triangles(const TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub,
+                             const std::vector<int>& to_parent) {
   std::vector<FaceKey> carried, got;
   for (int f = 0; f < parent.nb_tris(); ++f)
     if (x.selected_tri[f])
@@ -74,6 +67,51 @@ void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) 
   std::sort(got.begin(), got.end());
   if (carried != got)
     throw InvariantError("merge_regions: the optimized part changed its boundary triangles");
+}
+
+}  // namespace
+
+void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) {
+  merge_parts(parent, {&x}, {&sub});
+}
+
+void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& xs,
+                 const std::vector<const TetMesh*>& subs) {
+  if (xs.size() != subs.size())
+    throw InvariantError("merge_parts: as many optimized parts as extracted ones");
+  const int nt = parent.nb_tets();
+  std::vector<char> selected(nt, 0);
+  for (const RegionSubmesh* x : xs)
+    for (int t = 0; t < nt; ++t) {
+      if (!x->selected_tet[t]) continue;
+      if (selected[t]) throw InvariantError("merge_parts: the parts overlap");
+      selected[t] = 1;
+    }
+  std::vector<std::vector<int>> to_parent(xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    to_parent[i] = merge_vertices(parent, *xs[i], *subs[i]);
+    check_carried_triangles(parent, *xs[i], *subs[i], to_parent[i]);
+  }
+  // Tets: the unselected ones in their order, then each sub's.
+  std::vector<int> tets, region;
+  std::vector<std::size_t> tags;
+  const bool with_tags = !parent.tet_tags.empty();
+  for (int t = 0; t < nt; ++t) {
+    if (selected[t] || parent.tets[4 * t] < 0) continue;
+    tets.insert(tets.end(), &parent.tets[4 * t], &parent.tets[4 * t] + 4);
+    region.push_back(parent.tet_region[t]);
+    if (with_tags) tags.push_back(parent.tet_tags[t]);
+  }
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const TetMesh& sub = *subs[i];
+    for (int t = 0; t < sub.nb_tets(); ++t) {
+      if (sub.tets[4 * t] < 0) continue;
+      for (int k = 0; k < 4; ++k) tets.push_back(to_parent[i][sub.tets[4 * t + k]]);
+      region.push_back(sub.tet_region[t]);
+      if (with_tags)
+        tags.push_back(t < static_cast<int>(sub.tet_tags.size()) ? sub.tet_tags[t] : 0);
+    }
+  }
   parent.tets = std::move(tets);
   parent.tet_region = std::move(region);
   if (with_tags) parent.tet_tags = std::move(tags);

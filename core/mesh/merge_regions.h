@@ -11,4 +11,10 @@ namespace cvtmesh {
 // Throws InvariantError if the sub lost a vertex or moved a pinned one.
 void merge_regions(TetMesh& parent, const RegionSubmesh& extracted, const TetMesh& optimized);
 
+// The same for several disjoint parts extracted from the same parent (extract_tets), put back at
+// once: the tets no part selected first, then each part's in the order given; the vertices each
+// part added appended part after part.
+void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& extracted,
+                 const std::vector<const TetMesh*>& optimized);
+
 }  // namespace cvtmesh

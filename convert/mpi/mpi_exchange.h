@@ -1,0 +1,20 @@
+// The PartExchange of cvtmesh-mpi: the ranks of MPI_COMM_WORLD.
+#pragma once
+#include "core/distributed/part_exchange.h"
+
+namespace cvtmesh::cli {
+
+class MpiExchange : public PartExchange {
+ public:
+  MpiExchange();
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  // Sizes by MPI_Allgather, then each rank's buffer broadcast from it in chunks of at most 1 GB
+  // (MPI counts are ints).
+  std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) override;
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace cvtmesh::cli

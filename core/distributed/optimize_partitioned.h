@@ -1,0 +1,49 @@
+// The pipeline on a partitioned mesh (docs/scaling.md, ParMmg's scheme): the tets are cut into
+// parts (partition_tets.h), each part is optimized alone with its interface pinned and its
+// boundary fixed (extract_tets, the fixed-boundary pipeline of optimize()), the parts are put back
+// (merge_parts), and the next round cuts elsewhere -- away from the previous round's interface --
+// so that no vertex stays frozen in every round. Parts go to the ranks of a PartExchange (part p
+// to rank p mod size); every rank holds the whole mesh and ends with the same result, which does
+// not depend on the number of ranks.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/distributed/part_exchange.h"
+#include "core/pipeline/optimize.h"
+
+namespace cvtmesh {
+
+struct PartitionOptions {
+  int parts = 2;   // parts per round (at least 1; at most the tets)
+  int rounds = 2;  // rounds of partition, optimization and merge
+};
+
+struct PartitionRound {
+  int nb_cut_faces = 0;        // interface faces of this round's partition
+  int nb_avoided_cut = 0;      // of those, touching the previous round's interface
+  int nb_interface = 0;        // vertices pinned as interface this round
+  std::vector<int> part_tets;  // tets per part, before optimization
+  double seconds = 0;          // this rank's wall time in the round
+  QualityStats after;          // the merged mesh after the round
+};
+
+struct PartitionedResult {
+  QualityStats before, after;
+  std::vector<PartitionRound> rounds;
+  // Interior vertices of the input pinned in every round (frozen throughout; 0 with two rounds or
+  // more unless METIS could not avoid the previous interface).
+  int nb_frozen_every_round = 0;
+  bool kept_input = false;  // the result was worse than the input: the input is returned
+  std::vector<std::string> notes;
+  double seconds = 0;
+};
+
+// Optimizes mesh in place (its boundary and region interfaces kept, as with fix_boundary). Every
+// rank of `exchange` calls it with the same mesh and options. options.method applies to each part
+// (fix_boundary is forced; regions/physical selections are refused). Throws InputError for bad
+// options, InvariantError if a part or the merged mesh breaks an invariant (check_mesh).
+PartitionedResult optimize_partitioned(TetMesh& mesh, const OptimizeOptions& options,
+                                       const PartitionOptions& partition, PartExchange& exchange);
+
+}  // namespace cvtmesh

@@ -1,0 +1,187 @@
+// optimize_partitioned: parts optimized alone with their interfaces pinned, put back, the cut moved
+// between rounds; the result valid, the boundary kept, no interior vertex frozen throughout, and
+// the same mesh whatever the number of ranks.
+#include "core/distributed/optimize_partitioned.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <condition_variable>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include "core/mesh/check_mesh.h"
+#include "core/mesh/extract_regions.h"
+#include "core/mesh/face_key.h"
+#include "core/mesh/merge_regions.h"
+#include "core/util/error.h"
+#include "tests/support/test_meshes.h"
+
+namespace cvtmesh {
+namespace {
+
+std::multiset<FaceKey> boundary_faces(const TetMesh& m) {
+  std::multiset<FaceKey> s;
+  for (int f = 0; f < m.nb_tris(); ++f)
+    s.insert(face_key(m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]));
+  return s;
+}
+
+// `n` ranks as threads of this process: all_gather waits for every rank's buffer.
+class ThreadRanks {
+ public:
+  explicit ThreadRanks(int n) : n_(n), slots_(n) {}
+  std::vector<std::vector<char>> gather(int rank, const std::vector<char>& mine) {
+    std::unique_lock<std::mutex> lock(m_);
+    const long generation = generation_;
+    slots_[rank] = mine;
+    if (++arrived_ == n_) {
+      result_ = slots_;
+      arrived_ = 0;
+      ++generation_;
+      cv_.notify_all();
+    } else {
+      cv_.wait(lock, [&] { return generation_ != generation; });
+    }
+    return result_;
+  }
+  int size() const { return n_; }
+
+ private:
+  int n_, arrived_ = 0;
+  long generation_ = 0;
+  std::vector<std::vector<char>> slots_, result_;
+  std::mutex m_;
+  std::condition_variable cv_;
+};
+
+class ThreadExchange : public PartExchange {
+ public:
+  ThreadExchange(ThreadRanks& ranks, int rank) : ranks_(ranks), rank_(rank) {}
+  int rank() const override { return rank_; }
+  int size() const override { return ranks_.size(); }
+  std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) override {
+    return ranks_.gather(rank_, mine);
+  }
+
+ private:
+  ThreadRanks& ranks_;
+  int rank_;
+};
+
+TEST(OptimizePartitioned, ValidBoundaryKeptBetterAndNoInteriorVertexFrozenInEveryRound) {
+  const TetMesh input = testing::cube_sphere(0.12, 0.1).tet;
+  TetMesh m = input;
+  SerialExchange serial;
+  const PartitionedResult r = optimize_partitioned(m, OptimizeOptions{}, {2, 2}, serial);
+  ASSERT_EQ(r.rounds.size(), 2u);
+  EXPECT_FALSE(r.kept_input);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems.front());
+  EXPECT_EQ(boundary_faces(m), boundary_faces(input));  // same vertex ids: the boundary's kept
+  for (int v = 0; v < input.nb_vertices(); ++v)
+    if (input.vclass[v].dim < 3)
+      EXPECT_TRUE(std::equal(m.point(v), m.point(v) + 3, input.point(v))) << v;
+  for (const PartitionRound& pr : r.rounds) {
+    EXPECT_EQ(pr.part_tets.size(), 2u);
+    EXPECT_GT(pr.nb_interface, 0);
+  }
+  EXPECT_EQ(r.rounds[1].nb_avoided_cut, 0);
+  EXPECT_EQ(r.nb_frozen_every_round, 0);
+  EXPECT_GT(r.after.q_min, r.before.q_min);
+  EXPECT_GT(r.after.q_avg, r.before.q_avg);
+  EXPECT_GT(r.after.min_angle, r.before.min_angle);
+  // One round leaves the interface frozen: the count says so.
+  TetMesh once = input;
+  EXPECT_GT(optimize_partitioned(once, OptimizeOptions{}, {2, 1}, serial).nb_frozen_every_round, 0);
+}
+
+TEST(OptimizePartitioned, TwoRanksGiveTheSameMeshAsOne) {
+  const TetMesh input = testing::cube_sphere(0.15, 0.12).tet;
+  OptimizeOptions o;
+  o.method = "cvdt+swap";
+  TetMesh one = input;
+  SerialExchange serial;
+  optimize_partitioned(one, o, {3, 2}, serial);
+  ThreadRanks ranks(2);
+  std::vector<TetMesh> out(2, input);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back([&, k] {
+      ThreadExchange ex(ranks, k);
+      optimize_partitioned(out[k], o, {3, 2}, ex);
+    });
+  for (auto& t : threads) t.join();
+  for (const TetMesh& m : out) {
+    EXPECT_EQ(m.xyz, one.xyz);
+    EXPECT_EQ(m.tets, one.tets);
+    EXPECT_EQ(m.tris, one.tris);
+  }
+}
+
+TEST(OptimizePartitioned, RefusesASelectionOfVolumesAndBadCounts) {
+  TetMesh m = testing::cube6();
+  SerialExchange serial;
+  OptimizeOptions o;
+  o.regions = "1";
+  EXPECT_THROW(optimize_partitioned(m, o, {2, 2}, serial), InputError);
+  EXPECT_THROW(optimize_partitioned(m, OptimizeOptions{}, {0, 2}, serial), InputError);
+  EXPECT_THROW(optimize_partitioned(m, OptimizeOptions{}, {2, 0}, serial), InputError);
+  EXPECT_THROW(optimize_partitioned(m, OptimizeOptions{}, {7, 1}, serial), InputError);
+}
+
+TEST(MergeParts, PartsPutBackUnchangedGiveTheSameTetsAndOverlapsAreRefused) {
+  TetMesh m = testing::cube_sphere(0.2, 0.15).tet;
+  std::vector<RegionSubmesh> xs;
+  for (int p = 0; p < 3; ++p) {
+    std::vector<char> sel(m.nb_tets(), 0);
+    for (int t = 0; t < m.nb_tets(); ++t) sel[t] = t % 3 == p;
+    xs.push_back(extract_tets(m, sel));
+    EXPECT_TRUE(check_mesh(xs.back().mesh).ok);
+  }
+  TetMesh back = m;
+  merge_parts(back, {&xs[0], &xs[1], &xs[2]}, {&xs[0].mesh, &xs[1].mesh, &xs[2].mesh});
+  EXPECT_EQ(back.xyz, m.xyz);
+  EXPECT_TRUE(check_mesh(back).ok);
+  auto tets_of = [](const TetMesh& x) {
+    std::multiset<std::array<int, 4>> s;
+    for (int t = 0; t < x.nb_tets(); ++t) {
+      std::array<int, 4> q{x.tets[4 * t], x.tets[4 * t + 1], x.tets[4 * t + 2], x.tets[4 * t + 3]};
+      std::sort(q.begin(), q.end());
+      s.insert(q);
+    }
+    return s;
+  };
+  EXPECT_EQ(tets_of(back), tets_of(m));
+  TetMesh again = m;
+  EXPECT_THROW(merge_parts(again, {&xs[0], &xs[0]}, {&xs[0].mesh, &xs[0].mesh}), InvariantError);
+}
+
+TEST(PackPart, RoundTripAndShortBufferRefused) {
+  const TetMesh m = testing::cube_sphere(0.2, 0.15).tet;
+  std::vector<char> buf;
+  pack_part(m, buf);
+  pack_part(m, buf);
+  TetMesh a, b;
+  std::size_t pos = 0;
+  unpack_part(buf, pos, a);
+  unpack_part(buf, pos, b);
+  EXPECT_EQ(pos, buf.size());
+  for (const TetMesh* x : {&a, &b}) {
+    EXPECT_EQ(x->xyz, m.xyz);
+    EXPECT_EQ(x->tets, m.tets);
+    EXPECT_EQ(x->tris, m.tris);
+    EXPECT_EQ(x->tri_surface, m.tri_surface);
+    EXPECT_EQ(x->node_tags, m.node_tags);
+  }
+  buf.resize(buf.size() - 5);
+  pos = 0;
+  TetMesh c;
+  unpack_part(buf, pos, c);
+  EXPECT_THROW(unpack_part(buf, pos, c), InvariantError);
+}
+
+}  // namespace
+}  // namespace cvtmesh
