@@ -45,8 +45,9 @@ void run_partitioned(MeshData& d, OptimizeOptions& opt, const PartitionOptions& 
   for (const auto& f : prints)
     if (f != prints.front())
       throw InputError("optimize --parts: the ranks read different meshes from the input");
-  if (!opt.fix_boundary && ex.rank() == 0)
-    info() << "cvtmesh: note: the partitioned optimization keeps the boundary fixed\n";
+  if (!opt.fix_boundary && ex.rank() == 0 && opt.method == "cvdt+swap+smooth")
+    info() << "cvtmesh: note: in the partitioned optimization the boundary moves on the input's "
+              "own triangles (not on a CAD model), without surface coarsening\n";
   const PartitionedResult r = optimize_partitioned(d.tet, opt, po, ex);
   if (ex.rank() != 0) return;
   for (std::size_t k = 0; k < r.rounds.size(); ++k) {

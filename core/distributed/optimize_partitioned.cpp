@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/distributed/partition_tets.h"
+#include "core/mesh/bounding_box.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/extract_regions.h"
@@ -72,8 +73,22 @@ PartitionedResult optimize_partitioned(TetMesh& mesh, const OptimizeOptions& opt
   std::vector<int> frozen_rounds(nv0, 0);
   std::vector<char> previous_interface;
   OptimizeOptions so = options;
-  so.fix_boundary = true;
   so.progress = nullptr;
+  const bool free = !options.fix_boundary;
+  if (free) {
+    // The free boundary in each part, on the part's own triangles (the discrete geometry: the
+    // interface's edges, both ends pinned, are then never flipped), no surface coarsening (a
+    // vertex removed from a part would leave the others' numbering). Each round may move the
+    // surface by its share of the bounds: the distance to the input's boundary adds up over the
+    // rounds (triangle inequality), so the whole run stays within the user's bound; the same for
+    // the volume.
+    so.boundary_model = nullptr;
+    so.coarsen_surface = 0;
+    so.hausdorff =
+        (options.hausdorff > 0 ? options.hausdorff : 2e-3 * bounding_box_diagonal(mesh)) /
+        po.rounds;
+    so.volume_tolerance = options.volume_tolerance / po.rounds;
+  }
   for (int round = 0; round < po.rounds; ++round) {
     const auto tr = std::chrono::steady_clock::now();
     PartitionRound pr;
@@ -130,7 +145,7 @@ PartitionedResult optimize_partitioned(TetMesh& mesh, const OptimizeOptions& opt
       xp.push_back(&xs[p]);
       rp.push_back(&results[p]);
     }
-    merge_parts(mesh, xp, rp);
+    merge_parts(mesh, xp, rp, free);
     check_merged(mesh, round);
     previous_interface = std::move(interface);
     previous_interface.resize(mesh.nb_vertices(), 0);  // the vertices the parts added: not frozen

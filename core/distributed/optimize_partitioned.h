@@ -1,6 +1,8 @@
 // The pipeline on a partitioned mesh (docs/scaling.md, ParMmg's scheme): the tets are cut into
-// parts (partition_tets.h), each part is optimized alone with its interface pinned and its
-// boundary fixed (extract_tets, the fixed-boundary pipeline of optimize()), the parts are put back
+// parts (partition_tets.h), each part is optimized alone with its interface pinned
+// (extract_tets, then optimize(): with the default free boundary, the part's share of the
+// model's boundary moves on the part's own boundary triangles, without surface coarsening, each
+// round within 1/rounds of the Hausdorff and volume bounds), the parts are put back
 // (merge_parts), and the next round cuts elsewhere -- away from the previous round's interface --
 // so that no vertex stays frozen in every round. Parts go to the ranks of a PartExchange (part p
 // to rank p mod size); every rank holds the whole mesh and ends with the same result, which does
@@ -39,9 +41,9 @@ struct PartitionedResult {
   double seconds = 0;
 };
 
-// Optimizes mesh in place (its boundary and region interfaces kept, as with fix_boundary). Every
-// rank of `exchange` calls it with the same mesh and options. options.method applies to each part
-// (fix_boundary is forced; regions/physical selections are refused). Throws InputError for bad
+// Optimizes mesh in place. Every rank of `exchange` calls it with the same mesh and options.
+// options.method applies to each part (options.boundary_model is not used: the discrete
+// geometry; regions/physical selections are refused). Throws InputError for bad
 // options, InvariantError if a part or the merged mesh breaks an invariant (check_mesh).
 PartitionedResult optimize_partitioned(TetMesh& mesh, const OptimizeOptions& options,
                                        const PartitionOptions& partition, PartExchange& exchange);

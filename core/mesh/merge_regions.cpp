@@ -49,24 +49,80 @@ std::vector<int> merge_vertices(TetMesh& parent, const RegionSubmesh& x, const T
   return to_parent;
 }
 
-// Triangles: the parent's stay; the sub must carry the same ones (its boundary is kept).
+// Triangles: the parent's carried ones must come back (unless the boundary moved), and the added
+// interface faces always.
 void check_carried_triangles(const TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub,
-                             const std::vector<int>& to_parent) {
-  std::vector<FaceKey> carried, got;
+                             const std::vector<int>& to_parent, bool boundary_moved) {
+  std::vector<FaceKey> carried, got, added, added_back;
   for (int f = 0; f < parent.nb_tris(); ++f)
     if (x.selected_tri[f])
       carried.push_back(
           face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
   const int added_surface = x.nb_added_faces ? x.mesh.tri_surface.back() : 0;
+  for (int f = 0; f < x.mesh.nb_tris(); ++f)
+    if (x.nb_added_faces && x.mesh.tri_surface[f] == added_surface)
+      added.push_back(face_key(x.to_parent[x.mesh.tris[3 * f]], x.to_parent[x.mesh.tris[3 * f + 1]],
+                               x.to_parent[x.mesh.tris[3 * f + 2]]));
   for (int f = 0; f < sub.nb_tris(); ++f) {
-    if (x.nb_added_faces && sub.tri_surface[f] == added_surface) continue;
-    got.push_back(face_key(to_parent[sub.tris[3 * f]], to_parent[sub.tris[3 * f + 1]],
-                           to_parent[sub.tris[3 * f + 2]]));
+    const bool is_added = x.nb_added_faces && sub.tri_surface[f] == added_surface;
+    (is_added ? added_back : got)
+        .push_back(face_key(to_parent[sub.tris[3 * f]], to_parent[sub.tris[3 * f + 1]],
+                            to_parent[sub.tris[3 * f + 2]]));
   }
+  std::sort(added.begin(), added.end());
+  std::sort(added_back.begin(), added_back.end());
+  if (added != added_back)
+    throw InvariantError("merge_regions: the optimized part changed its interface");
+  if (boundary_moved) return;
   std::sort(carried.begin(), carried.end());
   std::sort(got.begin(), got.end());
   if (carried != got)
     throw InvariantError("merge_regions: the optimized part changed its boundary triangles");
+}
+
+// The parent's triangles no part carried or two parts did (an interface between volumes on the
+// cut: its vertices were pinned in both), in order, then each part's own (not its interface's).
+void replace_carried_triangles(TetMesh& parent, const std::vector<const RegionSubmesh*>& xs,
+                               const std::vector<const TetMesh*>& subs,
+                               const std::vector<std::vector<int>>& to_parent) {
+  std::vector<int> carried(parent.nb_tris(), 0);
+  for (const RegionSubmesh* x : xs)
+    for (int f = 0; f < parent.nb_tris(); ++f) carried[f] += x->selected_tri[f];
+  std::vector<FaceKey> shared;
+  for (int f = 0; f < parent.nb_tris(); ++f)
+    if (carried[f] > 1)
+      shared.push_back(
+          face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
+  std::sort(shared.begin(), shared.end());
+  const bool with_tags = !parent.tri_tags.empty();
+  std::vector<int> tris, surface;
+  std::vector<std::size_t> tags;
+  for (int f = 0; f < parent.nb_tris(); ++f) {
+    if (carried[f] == 1) continue;
+    tris.insert(tris.end(), &parent.tris[3 * f], &parent.tris[3 * f] + 3);
+    surface.push_back(parent.tri_surface[f]);
+    if (with_tags) tags.push_back(parent.tri_tags[f]);
+  }
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const RegionSubmesh& x = *xs[i];
+    const TetMesh& sub = *subs[i];
+    const int added_surface = x.nb_added_faces ? x.mesh.tri_surface.back() : 0;
+    for (int f = 0; f < sub.nb_tris(); ++f) {
+      if (x.nb_added_faces && sub.tri_surface[f] == added_surface) continue;
+      const int* v = &sub.tris[3 * f];
+      if (!shared.empty() &&
+          std::binary_search(shared.begin(), shared.end(),
+                             face_key(to_parent[i][v[0]], to_parent[i][v[1]], to_parent[i][v[2]])))
+        continue;
+      for (int k = 0; k < 3; ++k) tris.push_back(to_parent[i][v[k]]);
+      surface.push_back(sub.tri_surface[f]);
+      if (with_tags)
+        tags.push_back(f < static_cast<int>(sub.tri_tags.size()) ? sub.tri_tags[f] : 0);
+    }
+  }
+  parent.tris = std::move(tris);
+  parent.tri_surface = std::move(surface);
+  if (with_tags) parent.tri_tags = std::move(tags);
 }
 
 }  // namespace
@@ -76,7 +132,7 @@ void merge_regions(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) 
 }
 
 void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& xs,
-                 const std::vector<const TetMesh*>& subs) {
+                 const std::vector<const TetMesh*>& subs, bool boundary_moved) {
   if (xs.size() != subs.size())
     throw InvariantError("merge_parts: as many optimized parts as extracted ones");
   const int nt = parent.nb_tets();
@@ -90,7 +146,7 @@ void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& xs,
   std::vector<std::vector<int>> to_parent(xs.size());
   for (std::size_t i = 0; i < xs.size(); ++i) {
     to_parent[i] = merge_vertices(parent, *xs[i], *subs[i]);
-    check_carried_triangles(parent, *xs[i], *subs[i], to_parent[i]);
+    check_carried_triangles(parent, *xs[i], *subs[i], to_parent[i], boundary_moved);
   }
   // Tets: the unselected ones in their order, then each sub's.
   std::vector<int> tets, region;
@@ -115,6 +171,7 @@ void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& xs,
   parent.tets = std::move(tets);
   parent.tet_region = std::move(region);
   if (with_tags) parent.tet_tags = std::move(tags);
+  if (boundary_moved) replace_carried_triangles(parent, xs, subs, to_parent);
   build_adjacency(parent);
 }
 

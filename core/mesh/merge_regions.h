@@ -13,8 +13,13 @@ void merge_regions(TetMesh& parent, const RegionSubmesh& extracted, const TetMes
 
 // The same for several disjoint parts extracted from the same parent (extract_tets), put back at
 // once: the tets no part selected first, then each part's in the order given; the vertices each
-// part added appended part after part.
+// part added appended part after part. With boundary_moved, a part may have changed the parent's
+// triangles it carried (a free boundary: vertices moved on their surfaces, surface edges flipped):
+// those are replaced by the part's (the parent's other triangles first, in order, then each
+// part's); without it they must come back the same. Either way the faces a part had on its
+// interface with the others (extract_tets' added faces) must come back exactly, or the parts
+// would not fit together: InvariantError.
 void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& extracted,
-                 const std::vector<const TetMesh*>& optimized);
+                 const std::vector<const TetMesh*>& optimized, bool boundary_moved = false);
 
 }  // namespace cvtmesh

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <condition_variable>
 #include <mutex>
@@ -75,7 +76,9 @@ TEST(OptimizePartitioned, ValidBoundaryKeptBetterAndNoInteriorVertexFrozenInEver
   const TetMesh input = testing::cube_sphere(0.12, 0.1).tet;
   TetMesh m = input;
   SerialExchange serial;
-  const PartitionedResult r = optimize_partitioned(m, OptimizeOptions{}, {2, 2}, serial);
+  OptimizeOptions fixed;
+  fixed.fix_boundary = true;
+  const PartitionedResult r = optimize_partitioned(m, fixed, {2, 2}, serial);
   ASSERT_EQ(r.rounds.size(), 2u);
   EXPECT_FALSE(r.kept_input);
   const MeshCheck c = check_mesh(m);
@@ -95,7 +98,38 @@ TEST(OptimizePartitioned, ValidBoundaryKeptBetterAndNoInteriorVertexFrozenInEver
   EXPECT_GT(r.after.min_angle, r.before.min_angle);
   // One round leaves the interface frozen: the count says so.
   TetMesh once = input;
-  EXPECT_GT(optimize_partitioned(once, OptimizeOptions{}, {2, 1}, serial).nb_frozen_every_round, 0);
+  EXPECT_GT(optimize_partitioned(once, fixed, {2, 1}, serial).nb_frozen_every_round, 0);
+}
+
+// The default free boundary in each part: boundary vertices move, but stay on the model (the
+// unit cube's faces or the sphere of radius 0.25 at its centre) within the Hausdorff bound, the
+// interfaces between parts still fit (check_mesh), and the result beats the fixed-boundary one.
+TEST(OptimizePartitioned, FreeBoundaryMovesOnTheModelWithinTheBound) {
+  const TetMesh input = testing::cube_sphere(0.12, 0.1).tet;
+  TetMesh free_mesh = input, fixed_mesh = input;
+  SerialExchange serial;
+  OptimizeOptions fixed;
+  fixed.fix_boundary = true;
+  const PartitionedResult rf = optimize_partitioned(free_mesh, OptimizeOptions{}, {3, 2}, serial);
+  const PartitionedResult rx = optimize_partitioned(fixed_mesh, fixed, {3, 2}, serial);
+  EXPECT_FALSE(rf.kept_input);
+  const MeshCheck c = check_mesh(free_mesh);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems.front());
+  const double bound = 2e-3 * std::sqrt(3.0);  // 2e-3 of the unit cube's diagonal
+  int moved = 0;
+  std::vector<char> on_boundary(free_mesh.nb_vertices(), 0);
+  for (int v : free_mesh.tris) on_boundary[v] = 1;
+  for (int v = 0; v < free_mesh.nb_vertices(); ++v) {
+    if (!on_boundary[v]) continue;
+    const double* p = free_mesh.point(v);
+    double d = std::abs(std::hypot(p[0] - 0.5, p[1] - 0.5, p[2] - 0.5) - 0.25);
+    for (int k = 0; k < 3; ++k) d = std::min({d, std::abs(p[k]), std::abs(1 - p[k])});
+    EXPECT_LE(d, bound) << v;
+    moved += v < input.nb_vertices() && !std::equal(p, p + 3, input.point(v));
+  }
+  EXPECT_GT(moved, 0);
+  EXPECT_GT(rf.after.q_avg, rx.after.q_avg);
+  EXPECT_GE(rf.after.q_min, rf.before.q_min);
 }
 
 TEST(OptimizePartitioned, TwoRanksGiveTheSameMeshAsOne) {
