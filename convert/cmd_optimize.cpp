@@ -38,9 +38,13 @@ std::vector<char> mesh_fingerprint(const TetMesh& m) {
 // of exchange_factory() (this process alone, or MPI's under cvtmesh-mpi). Rank 0 prints and
 // writes.
 void run_partitioned(MeshData& d, OptimizeOptions& opt, const PartitionOptions& po,
-                     PartExchange& ex) {
+                     PartExchange& ex, const std::string& path) {
   if (d.dim != 3)
-    throw InputError("optimize --parts: the partitioned optimization needs a 3D tet mesh");
+    throw InputError("optimize --parts: '" + path +
+                     "' is not a 3D tet mesh (the partitioned optimization needs one)");
+  if (d.tet.nb_tets() < po.parts)
+    throw InputError("optimize --parts " + std::to_string(po.parts) + ": '" + path + "' has " +
+                     std::to_string(d.tet.nb_tets()) + " tets, fewer than the parts");
   const std::vector<std::vector<char>> prints = ex.all_gather(mesh_fingerprint(d.tet));
   for (const auto& f : prints)
     if (f != prints.front())
@@ -160,7 +164,7 @@ void register_optimize(CLI::App& app) {
              throw InputError(
                  "optimize --parts: --report and --format json are not available "
                  "for the partitioned optimization");
-           run_partitioned(d, *opt, *partition, *ranks);
+           run_partitioned(d, *opt, *partition, *ranks, in->path);
            if (writer && d.model().high_order.order == 2) {
              MidEdgePlacement& p = d.model().high_order.placed;
              p = place_mid_edge_nodes(d.tet,

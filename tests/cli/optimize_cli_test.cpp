@@ -60,6 +60,42 @@ TEST(OptimizeCli, UnknownMethodAndBadOptionsFailCleanly) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.msh"));
 }
 
+// `optimize --parts`: a 2D mesh and more parts than tets are refused (exit 2) with the file
+// named, nothing written; a 3D run writes a mesh that `check` accepts.
+TEST(OptimizeCli, PartsRefusesA2DMeshAndMorePartsThanTetsAndWritesAValidMesh) {
+  const std::string dir = testing::temp_dir();
+  std::string log;
+  const std::string quad = testing::geo_path("quad.geo");
+  EXPECT_EQ(
+      testing::run(testing::cli_path() + " optimize " + quad + " -o " + dir + "/x.msh --parts 2",
+                   &log),
+      2)
+      << log;
+  EXPECT_NE(log.find("quad.geo' is not a 3D tet mesh"), std::string::npos) << log;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.msh"));
+  const std::string init = dir + "/init.msh";
+  ASSERT_EQ(testing::run(testing::cli_path() + " mesh " + testing::geo_path("cube_sphere.geo") +
+                             kCoarse + " -o " + init,
+                         &log),
+            0)
+      << log;
+  EXPECT_EQ(
+      testing::run(
+          testing::cli_path() + " optimize " + init + " -o " + dir + "/x.msh --parts 100000", &log),
+      2)
+      << log;
+  EXPECT_NE(log.find("fewer than the parts"), std::string::npos) << log;
+  EXPECT_NE(log.find("init.msh"), std::string::npos) << log;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.msh"));
+  ASSERT_EQ(testing::run(testing::cli_path() + " optimize " + init + " -o " + dir +
+                             "/p.msh --parts 3 --rounds 2",
+                         &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("round 2: 3 parts"), std::string::npos) << log;
+  EXPECT_EQ(testing::run(testing::cli_path() + " check " + dir + "/p.msh", &log), 0) << log;
+}
+
 TEST(OptimizeCli, CompareHasTheInitAndCvdtColumnsAndTheBaselines) {
   std::string log;
   ASSERT_EQ(testing::run(testing::cli_path() + " compare " + testing::geo_path("cube_sphere.geo") +
