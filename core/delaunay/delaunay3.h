@@ -10,7 +10,8 @@
 namespace cvtmesh {
 
 struct Delaunay3Stats {
-  int nb_steiner = 0;       // points the backend had to add (appended to the mesh, interior class)
+  int nb_steiner =
+      0;  // points the backend added to kept tets (appended to the mesh, interior class)
   int nb_dropped_tets = 0;  // tets outside every region (holes) that were discarded
 };
 
@@ -28,5 +29,10 @@ class Delaunay3 {
   // "tetgen" (TetGen 1.5, -pY: the boundary mesh is preserved exactly).
   static std::unique_ptr<Delaunay3> create(const std::string& name = "tetgen");
 };
+
+// The TetGen rebuild behind the "tetgen" backend with other switches (they must include pYAz: a
+// PLC of the constrained triangles, the boundary kept, region attributes, 0-based), run in a
+// child process; `stage` names it in errors. refine_interior3 adds q.
+Delaunay3Stats tetgen_rebuild(TetMesh& mesh, const std::string& switches, const std::string& stage);
 
 }  // namespace cvtmesh

@@ -21,6 +21,7 @@
 #include "core/boundary/verify_free_boundary.h"
 #include "core/cvt/lloyd3.h"
 #include "core/cvt/sizing_field3.h"
+#include "core/delaunay/refine_interior3.h"
 #include "core/pipeline/combined_optimize.h"
 #include "core/pipeline/measure_on_input_boundary.h"
 #include "core/pipeline/methods3.h"
@@ -689,6 +690,12 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
                     RestoreNote* restored = nullptr) {
   TetMesh mesh = input;
   pin_vertices(mesh);
+  if (o.refine_interior > 0 && rebuilds_tetrahedralization(method)) {
+    const Delaunay3Stats st = refine_interior3(mesh, o.refine_interior);
+    if (st.nb_steiner > 0)
+      r.notes.push_back(std::to_string(st.nb_steiner) +
+                        " interior vertices added before Lloyd (--refine-interior)");
+  }
   // The default method moves the boundary (issue 13; core/boundary/) unless fix_boundary.
   const bool free_boundary = !o.fix_boundary && method == "cvdt+swap+smooth";
   std::optional<BoundaryModel> b;

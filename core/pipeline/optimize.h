@@ -134,6 +134,11 @@ struct OptimizeOptions {
   // interior spacing near it is collapsed (its surface vertex removed), under the Hausdorff
   // bound and the volume budget; 0 = none. Not on an order-2 or periodic input.
   double coarsen_surface = 0.7;
+  // Interior refinement before Lloyd (the methods that rebuild the tetrahedralization: cvdt*):
+  // TetGen's quality bound, Steiner points at the circumcentres of the tets whose circumradius
+  // exceeds this times their shortest edge, none on the boundary (core/delaunay/
+  // refine_interior3.h); 0 = none. For an Init with too few interior vertices (a coarse model).
+  double refine_interior = 0;
   // The reference geometry of a free boundary: null, or a function returning a model without
   // geometry = the input's own boundary triangulation (make_discrete_boundary); the front ends
   // with the CAD loaded pass make_gmsh_cad_boundary_if_cad (core/io/gmsh_cad_boundary.h).

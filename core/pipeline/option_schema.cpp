@@ -223,6 +223,17 @@ std::vector<OptionSpec> make_schema() {
                      "spacing near them are collapsed (surface vertices removed, under the "
                      "Hausdorff and volume bounds) after the first Lloyd (0 = none)",
                      kDim3));
+  {
+    // 0 (none) or TetGen's radius-edge bound, which must exceed 1.
+    OptionSpec s = number("refine_interior", "--refine-interior", &O::refine_interior, 1.05, 10,
+                          "cvdt methods: before Lloyd, add interior vertices where a tet's "
+                          "circumradius exceeds this times its shortest edge (TetGen's quality "
+                          "bound, the boundary kept; 1.2 for a coarse model; 0 = none)",
+                          kDim3);
+    s.special = 0;
+    s.has_special = true;
+    v.push_back(s);
+  }
   // Issue 14 (robust branch): Python only for now; the CLI has --allow-worse (cmd_optimize.cpp).
   v.push_back(boolean("never_worse", "", &O::never_worse,
                       "never worse than the input: a result with a lower Q_min or min angle or a "
