@@ -54,10 +54,6 @@ std::vector<int> merge_vertices(TetMesh& parent, const RegionSubmesh& x, const T
 void check_carried_triangles(const TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub,
                              const std::vector<int>& to_parent, bool boundary_moved) {
   std::vector<FaceKey> carried, got, added, added_back;
-  for (int f = 0; f < parent.nb_tris(); ++f)
-    if (x.selected_tri[f])
-      carried.push_back(
-          face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
   const int added_surface = x.nb_added_faces ? x.mesh.tri_surface.back() : 0;
   for (int f = 0; f < x.mesh.nb_tris(); ++f)
     if (x.nb_added_faces && x.mesh.tri_surface[f] == added_surface)
@@ -74,6 +70,10 @@ void check_carried_triangles(const TetMesh& parent, const RegionSubmesh& x, cons
   if (added != added_back)
     throw InvariantError("merge_regions: the optimized part changed its interface");
   if (boundary_moved) return;
+  for (int f = 0; f < parent.nb_tris(); ++f)
+    if (x.selected_tri[f])
+      carried.push_back(
+          face_key(parent.tris[3 * f], parent.tris[3 * f + 1], parent.tris[3 * f + 2]));
   std::sort(carried.begin(), carried.end());
   std::sort(got.begin(), got.end());
   if (carried != got)
