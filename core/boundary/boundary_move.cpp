@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/boundary/boundary_hausdorff.h"
+#include "core/boundary/surface_folds.h"
 #include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
 
@@ -45,6 +46,10 @@ PlannedBoundaryMove check_boundary_move(const TetMesh& m, const BoundaryModel& m
       plan.status = BoundaryMoveStatus::kInverted;
       return plan;
     }
+  }
+  if (move_folds_surface(m, fans, v, plan.position)) {
+    plan.status = BoundaryMoveStatus::kFolds;
+    return plan;
   }
   if (std::isfinite(hausdorff) &&
       !fan_within_tolerance(m, model, fans, v, plan.position, hausdorff)) {

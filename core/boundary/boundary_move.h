@@ -3,8 +3,8 @@
 //  - plan_boundary_move projects a wanted position onto the vertex's own entity (its surface
 //    patch or curve of the reference geometry; corners, locked and interior vertices do not move
 //    here) and checks the result: every tet of its star stays positively oriented (exact
-//    orient3d) and every triangle of its boundary fan stays within `hausdorff` of the reference
-//    boundary (at its centroid and edge midpoints);
+//    orient3d), the surface does not fold (surface_folds.h) and every triangle of its boundary
+//    fan stays within `hausdorff` of the reference boundary (at its centroid and edge midpoints);
 //  - apply_boundary_move writes the planned position.
 #pragma once
 #include "core/boundary/boundary_fans.h"
@@ -20,6 +20,7 @@ enum class BoundaryMoveStatus {
   kNoProjection,  // the reference geometry could not project the point
   kInverted,      // a tet of the star would be inverted or flat
   kTooFar,        // a fan triangle would leave the Hausdorff tolerance
+  kFolds,         // the fan would fold the surface (surface_folds.h)
 };
 
 struct PlannedBoundaryMove {

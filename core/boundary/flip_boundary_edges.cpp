@@ -8,6 +8,7 @@
 #include "core/boundary/boundary_fans.h"
 #include "core/boundary/boundary_hausdorff.h"
 #include "core/boundary/boundary_move.h"
+#include "core/boundary/surface_folds.h"
 #include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
@@ -143,6 +144,15 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       }
       double best = std::min(tri_q(mesh, a, c, d), tri_q(mesh, b, c, d));
       if (best <= old_min + o.min_gain) continue;
+      // The ring's turning sense: the old tet on the first link stands on b's side of the face
+      // (a, chain[0], chain[1]), so every new tet coned to a must stand there too. With the
+      // polygon's triangles in chain order, a must then see every one of them from the same
+      // side (-s), and b from the other: a sign chosen per triangle lets each tet be positive
+      // while the cone folds over itself (igl_bunny: two tets on the same side of a face).
+      const double s0 =
+          orient3d(mesh.point(a), mesh.point(chain[0]), mesh.point(chain[1]), mesh.point(b));
+      if (s0 == 0) continue;
+      const int sign_a = s0 > 0 ? -1 : 1;
       // The best triangulation of the polygon chain[0..k] coned to a and b.
       const PolygonTriangulations& table = polygon_triangulations(k + 1);
       double best_min = -1;
@@ -154,10 +164,10 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
         for (int id : tri_ids) {
           const auto& tr = table.triangles[id];
           const int u = chain[tr[0]], v = chain[tr[1]], w = chain[tr[2]];
-          // a and b strictly on both sides of the polygon triangle, or the cones overlap.
+          // a and b strictly on both sides of the polygon triangle, a on the ring's side.
           const double sa = orient3d(mesh.point(u), mesh.point(v), mesh.point(w), mesh.point(a));
           const double sb = orient3d(mesh.point(u), mesh.point(v), mesh.point(w), mesh.point(b));
-          if (!((sa > 0 && sb < 0) || (sa < 0 && sb > 0))) {
+          if (!(sign_a * sa > 0 && sign_a * sb < 0)) {
             valid = false;
             break;
           }
@@ -195,6 +205,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       }
       if (best_min <= old_min + o.min_gain) continue;
       if (!surface_flip_within(mesh, model, fans, p.f1, p.f2, a, b, c, d, o.hausdorff)) continue;
+      if (flip_folds_surface(mesh, fans, p.f1, p.f2, a, b, c, d, cos_flat)) continue;
       // Volume change: new minus old.
       double dv = 0;
       for (const auto& t : best_tets)
@@ -220,12 +231,7 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
       for (int t : p.ring)
         for (int j = 0; j < 4; ++j) dirty[mesh.tets[4 * static_cast<std::size_t>(t) + j]] = 1;
       apply_boundary_retriangulation(mesh, p.ring, best_tets, p.region);
-      mesh.tris[3 * static_cast<std::size_t>(p.f1)] = a;
-      mesh.tris[3 * static_cast<std::size_t>(p.f1) + 1] = c;
-      mesh.tris[3 * static_cast<std::size_t>(p.f1) + 2] = d;
-      mesh.tris[3 * static_cast<std::size_t>(p.f2)] = b;
-      mesh.tris[3 * static_cast<std::size_t>(p.f2) + 1] = d;
-      mesh.tris[3 * static_cast<std::size_t>(p.f2) + 2] = c;
+      retarget_flipped_triangles(mesh, p.f1, p.f2, a, b, c, d);
       ++flipped;
       ++stats.nb_flipped;
     }

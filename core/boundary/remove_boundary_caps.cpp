@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/boundary/boundary_hausdorff.h"
+#include "core/boundary/surface_folds.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/build_adjacency.h"
@@ -106,6 +107,8 @@ CapCheck plan_cap_removal(const TetMesh& m, const BoundaryModel& model, const Ve
   if (p.new_min <= p.old_min + o.min_gain) return CapCheck::kNoGain;
   if (!surface_flip_within(m, model, fans, p.f1, p.f2, a, b, c, d, o.hausdorff))
     return CapCheck::kHausdorff;
+  if (flip_folds_surface(m, fans, p.f1, p.f2, a, b, c, d, std::cos(o.flat_angle * kPi / 180)))
+    return CapCheck::kFolds;
   if (o.volume_budget) {
     const VolumeBudget& vb = *o.volume_budget;
     const double dv = -tet_volume(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]));
@@ -130,14 +133,7 @@ void apply_cap_removal(TetMesh& m, const CapPlan& p, VolumeBudget* budget) {
       here = -1;
     }
   m.tets[4 * static_cast<std::size_t>(p.tet)] = -1;
-  int* f1 = &m.tris[3 * static_cast<std::size_t>(p.f1)];
-  int* f2 = &m.tris[3 * static_cast<std::size_t>(p.f2)];
-  f1[0] = p.a;
-  f1[1] = p.c;
-  f1[2] = p.d;
-  f2[0] = p.b;
-  f2[1] = p.d;
-  f2[2] = p.c;
+  retarget_flipped_triangles(m, p.f1, p.f2, p.a, p.b, p.c, p.d);
 }
 
 CapRemovalStats remove_boundary_caps(TetMesh& mesh, const BoundaryModel& model,

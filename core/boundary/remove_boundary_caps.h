@@ -57,6 +57,7 @@ enum class CapCheck {
   kNoGain = -4,       // the local minimum would not rise
   kHausdorff = -5,    // a new triangle or an input vertex leaves the tolerance
   kVolume = -6,       // the volume change does not fit the budget
+  kFolds = -7,        // the new triangles would fold the surface (surface_folds.h)
 };
 
 // Checks the removal of tet t (live; mesh.adj built; star and fans of the current mesh). Fills
