@@ -9,10 +9,13 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
+#include "core/geometry/predicates.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/face_key.h"
 #include "core/mesh/find_surface_intersections.h"
 #include "core/util/error.h"
 
@@ -213,6 +216,42 @@ std::map<int, std::pair<long, std::vector<std::array<int, 2>>>> surface_topology
   return r;
 }
 
+// Per surface tag: how many of its triangles turn positively and negatively around the tet that
+// holds them (of the lowest region tag, for an interface): orient3d(triangle, the tet's fourth
+// vertex) > 0 or not. A positive tet fixes the side of each of its faces, so only rewriting a
+// triangle's vertex order changes its sense.
+std::map<int, std::array<long, 2>> surface_senses(const TetMesh& m) {
+  std::unordered_map<FaceKey, int, FaceKeyHash> tri_of;
+  tri_of.reserve(static_cast<std::size_t>(m.nb_tris()));
+  for (int f = 0; f < m.nb_tris(); ++f)
+    tri_of.emplace(face_key(m.tris[3 * f], m.tris[3 * f + 1], m.tris[3 * f + 2]), f);
+  std::vector<int> holder(static_cast<std::size_t>(m.nb_tris()), -1), apex(holder);
+  const bool has_adj = m.adj.size() == m.tets.size();
+  for (int t = 0; t < m.nb_tets(); ++t) {
+    const int* v = &m.tets[4 * static_cast<std::size_t>(t)];
+    if (v[0] < 0) continue;
+    for (int k = 0; k < 4; ++k) {
+      const int o = has_adj ? m.adj[4 * static_cast<std::size_t>(t) + k] : -1;
+      if (o >= 0 && m.tet_region[o / 4] == m.tet_region[t]) continue;
+      const auto it = tri_of.find(face_key(v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4]));
+      if (it == tri_of.end()) continue;
+      int& h = holder[it->second];
+      if (h < 0 || m.tet_region[t] < m.tet_region[h]) {
+        h = t;
+        apex[it->second] = v[k];
+      }
+    }
+  }
+  std::map<int, std::array<long, 2>> r;
+  for (int f = 0; f < m.nb_tris(); ++f) {
+    if (apex[f] < 0) continue;
+    const int* w = &m.tris[3 * static_cast<std::size_t>(f)];
+    ++r[m.tri_surface[f]]
+       [orient3d(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(apex[f])) > 0];
+  }
+  return r;
+}
+
 }  // namespace
 
 std::vector<std::pair<int, double>> region_volumes(const TetMesh& m) {
@@ -350,6 +389,20 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
         same &= it != ca.end() && n - it->second == lost;
       }
       if (!same) throw InvariantError(group_name(g) + " is no longer bounded by the same surfaces");
+    }
+  }
+  // A surface whose triangles all turned one way around the volume (a Gmsh file's outward or
+  // inward normals) still does, the same way: the surface flips rewrite triangles.
+  {
+    const auto sb = surface_senses(before), sa = surface_senses(after);
+    for (const auto& [tag, n] : sb) {
+      const auto it = sa.find(tag);
+      if (it == sa.end() || (n[0] > 0 && n[1] > 0)) continue;
+      const int way = n[1] > 0;
+      if (it->second[1 - way] > 0)
+        throw InvariantError(std::to_string(it->second[1 - way]) + " triangles of surface " +
+                             std::to_string(tag) +
+                             " were turned over (the input's all faced the same way)");
     }
   }
 }

@@ -15,7 +15,9 @@ namespace cvtmesh {
 // the region of their class's entity), every region present with its volume (area in 2D) conserved
 // to 1e-12 relative (compensated sums), every physical group present with the same name and
 // entities and, for groups of the mesh's dimension, bounded by the same triangles (edges), the
-// model's entities with the same boundaries, the point and line elements unchanged.
+// model's entities with the same boundaries, the point and line elements unchanged; and each
+// surface whose triangles all turned one way around the volume (orient3d against the tet that
+// holds them, of the lowest region tag for an interface) still does (a file's normals).
 void verify_optimized(const TetMesh& before, const TetMesh& after);
 
 // The same with a boundary that may move (the free-boundary optimization): boundary vertices are

@@ -74,6 +74,27 @@ TEST(VerifyOptimized, TheTwoCubesAreValidAndPass) {
   EXPECT_EQ(violation(m, m), "");
 }
 
+TEST(VerifyOptimized, DetectsASurfaceTriangleTurnedOverOnlyWhereItsSurfaceFacedOneWay) {
+  // The outer surface (1) faces one way around the volume: one of its triangles reversed is
+  // refused, with the boundary fixed or free. Made mixed in `before` too, nothing is claimed.
+  const TetMesh m = two_cubes();
+  TetMesh turned = m;
+  std::swap(turned.tris[1], turned.tris[2]);
+  ASSERT_EQ(turned.tri_surface[0], 1);
+  EXPECT_NE(violation(m, turned).find("triangles of surface 1 were turned over"),
+            std::string::npos);
+  VerifyOptions free;
+  free.boundary_moves = true;
+  EXPECT_THROW(verify_optimized(m, turned, free), InvariantError);
+  EXPECT_EQ(violation(turned, turned), "");
+  // The interface (99): its sense is taken around region 1's tets; reversing it is refused too.
+  TetMesh iface = m;
+  const int f = m.nb_tris() - 1;
+  ASSERT_EQ(iface.tri_surface[f], 99);
+  std::swap(iface.tris[3 * f + 1], iface.tris[3 * f + 2]);
+  EXPECT_NE(violation(m, iface).find("surface 99"), std::string::npos);
+}
+
 TEST(VerifyOptimized, AcceptsANewVertexInsideARegionOnlyIfClassifiedSo) {
   const TetMesh m = two_cubes();
   // The centre of the left cube joined to its 12 boundary triangles (insert_vertex).
