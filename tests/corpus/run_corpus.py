@@ -65,6 +65,7 @@ counts = {str(ty): len(tg) for ty, tg in zip(types, tags) if ty != 4}
 groups = sorted([d, g, gmsh.model.getPhysicalName(d, g)] for d, g in gmsh.model.getPhysicalGroups())
 # Per surface entity: how many of its triangles turn positively / negatively around the tet that
 # holds them (of the lowest volume entity tag at an interface): sign of det(b - a, c - a, apex - a).
+# As verify_optimized counts them (core/pipeline/verify_mesh.cpp).
 senses = {}
 import numpy as np
 nt, nx, _ = gmsh.model.mesh.getNodes()
@@ -90,17 +91,26 @@ if T and F:
     fk = key(F)
     order = np.argsort(fk)
     fks = fk[order]
-    holder = np.full(len(F), -1)
-    apex = np.full(len(F), -1)
-    by_region = np.argsort(-R, kind="stable")  # lowest region written last
+    hit_tri, hit_region, hit_apex = [], [], []
     for k in range(4):
-        face = np.delete(T, k, axis=1)[by_region]
-        tk = key(face)
+        tk = key(np.delete(T, k, axis=1))
         pos = np.clip(np.searchsorted(fks, tk), 0, len(fks) - 1)
         hit = fks[pos] == tk
-        tri = order[pos[hit]]
-        apex[tri] = T[by_region, k][hit]
-    ok = apex >= 0
+        hit_tri.append(order[pos[hit]])
+        hit_region.append(R[hit])
+        hit_apex.append(T[hit, k])
+    ht, hr, ha = np.concatenate(hit_tri), np.concatenate(hit_region), np.concatenate(hit_apex)
+    o = np.lexsort((-hr, ht))  # by triangle, the lowest region last
+    ht, hr, ha = ht[o], hr[o], ha[o]
+    apex = np.full(len(F), -1)
+    apex[ht] = ha
+    n_holders = np.bincount(ht, minlength=len(F))
+    r_min = np.full(len(F), np.iinfo(np.int64).max)
+    np.minimum.at(r_min, ht, hr)
+    r_max = np.full(len(F), np.iinfo(np.int64).min)
+    np.maximum.at(r_max, ht, hr)
+    # A surface inside one volume (both sides of one entity) has no side to keep: left out.
+    ok = (apex >= 0) & ~((n_holders == 2) & (r_min == r_max))
     a, b, c, d = X[F[ok, 0]], X[F[ok, 1]], X[F[ok, 2]], X[apex[ok]]
     pos_side = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a) > 0
     for e in np.unique(S[ok]):
