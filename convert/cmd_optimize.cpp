@@ -21,34 +21,18 @@ namespace cvtmesh::cli {
 
 namespace {
 
-// A hash of the mesh every rank read (coordinates and tets), to refuse ranks that differ.
-std::vector<char> mesh_fingerprint(const TetMesh& m) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](const void* data, std::size_t n) {
-    const unsigned char* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  };
-  mix(m.xyz.data(), m.xyz.size() * sizeof(double));
-  mix(m.tets.data(), m.tets.size() * sizeof(int));
-  const char* p = reinterpret_cast<const char*>(&h);
-  return std::vector<char>(p, p + sizeof h);
-}
-
 // `optimize --parts P`: the partitioned optimization (core/distributed/), the parts on the ranks
-// of exchange_factory() (this process alone, or MPI's under cvtmesh-mpi). Rank 0 prints and
-// writes.
+// of exchange_factory() (this process alone, or MPI's under cvtmesh-mpi). Rank 0 reads, prints
+// and writes; the other ranks get their parts from it (their `d` is empty). An error on rank 0
+// (a refused input) ends its process, and cvtmesh-mpi then aborts the others.
 void run_partitioned(MeshData& d, OptimizeOptions& opt, const PartitionOptions& po,
                      PartExchange& ex, const std::string& path) {
-  if (d.dim != 3)
+  if (ex.rank() == 0 && d.dim != 3)
     throw InputError("optimize --parts: '" + path +
                      "' is not a 3D tet mesh (the partitioned optimization needs one)");
-  if (d.tet.nb_tets() < po.parts)
+  if (ex.rank() == 0 && d.tet.nb_tets() < po.parts)
     throw InputError("optimize --parts " + std::to_string(po.parts) + ": '" + path + "' has " +
                      std::to_string(d.tet.nb_tets()) + " tets, fewer than the parts");
-  const std::vector<std::vector<char>> prints = ex.all_gather(mesh_fingerprint(d.tet));
-  for (const auto& f : prints)
-    if (f != prints.front())
-      throw InputError("optimize --parts: the ranks read different meshes from the input");
   if (!opt.fix_boundary && ex.rank() == 0 && opt.method == "cvdt+swap+smooth")
     info() << "cvtmesh: note: in the partitioned optimization the boundary moves on the input's "
               "own triangles (not on a CAD model), without surface coarsening\n";
@@ -146,17 +130,21 @@ void register_optimize(CLI::App& app) {
          // lives: a free boundary then moves on the CAD entities themselves (a .msh or a surface
          // file has none: the discrete geometry of the input).
          // An order-2 model's mid-edge nodes are projected on that CAD as well.
+         // In a partitioned run only rank 0 reads (the others get their parts from it).
+         const bool writer = !ranks || ranks->rank() == 0;
          std::optional<GmshSession> cad;
-         const bool model = read_mesh_meshes_a_model(in->path);
+         const bool model = writer && read_mesh_meshes_a_model(in->path);
          if (model) {
            cad.emplace();
            if (!opt->fix_boundary) opt->boundary_model = make_gmsh_cad_boundary_if_cad;
          }
-         progress->begin(model ? "meshing" : "reading", in->path);
-         MeshData d = read_mesh(in->path, in->to_read_options());
-         progress->finish();
+         MeshData d;
+         if (writer) {
+           progress->begin(model ? "meshing" : "reading", in->path);
+           d = read_mesh(in->path, in->to_read_options());
+           progress->finish();
+         }
          // A bad output location fails now, not after the optimization.
-         const bool writer = !ranks || ranks->rank() == 0;
          if (writer) check_can_write(out->path, out->to_write_options(d, in->path));
          if (writer && !report->empty()) check_directory_writable(*report);
          if (ranks) {

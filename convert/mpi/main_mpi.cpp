@@ -1,7 +1,7 @@
 // cvtmesh-mpi: the same command line as cvtmesh, under MPI (`mpirun -n P cvtmesh-mpi optimize IN
-// -o OUT --parts P`): a partitioned optimization runs part p on rank p mod P, every rank reading
-// the input itself, rank 0 printing and writing (docs/scaling.md). Any other subcommand runs on
-// every rank alike; use it on one rank.
+// -o OUT --parts P`): a partitioned optimization runs part p on rank p mod P; rank 0 reads the
+// input, sends each rank its parts, merges them, prints and writes (docs/scaling.md). Any other
+// subcommand runs on every rank alike; use it on one rank.
 #include <mpi.h>
 
 #include <memory>

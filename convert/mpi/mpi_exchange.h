@@ -12,6 +12,12 @@ class MpiExchange : public PartExchange {
   // Sizes by MPI_Allgather, then each rank's buffer broadcast from it in chunks of at most 1 GB
   // (MPI counts are ints).
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) override;
+  // The size, then the buffer in chunks (MPI_Bcast).
+  std::vector<char> broadcast(const std::vector<char>& from_root) override;
+  // Point to point: rank 0 sends rank k its buffer only (MPI_Send / MPI_Recv, size then chunks),
+  // and receives each rank's in rank order.
+  std::vector<char> scatter(const std::vector<std::vector<char>>& per_rank) override;
+  std::vector<std::vector<char>> gather(const std::vector<char>& mine) override;
 
  private:
   int rank_ = 0, size_ = 1;

@@ -4,9 +4,10 @@
 // model's boundary moves on the part's own boundary triangles, without surface coarsening, each
 // round within 1/rounds of the Hausdorff and volume bounds), the parts are put back
 // (merge_parts), and the next round cuts elsewhere -- away from the previous round's interface --
-// so that no vertex stays frozen in every round. Parts go to the ranks of a PartExchange (part p
-// to rank p mod size); every rank holds the whole mesh and ends with the same result, which does
-// not depend on the number of ranks.
+// so that no vertex stays frozen in every round. Rank 0 holds the mesh: it cuts it, sends each
+// rank of a PartExchange its parts (part p to rank p mod size), gets them back optimized and
+// merges them; the other ranks hold their parts only. The result does not depend on the number
+// of ranks.
 #pragma once
 #include <string>
 #include <vector>
@@ -41,7 +42,9 @@ struct PartitionedResult {
   double seconds = 0;
 };
 
-// Optimizes mesh in place. Every rank of `exchange` calls it with the same mesh and options.
+// Optimizes mesh in place on rank 0; every rank of `exchange` calls it with the same options,
+// rank 0 with the mesh (the others' `mesh` is neither read nor changed: give an empty one; their
+// result holds each round's seconds only).
 // options.method applies to each part (options.boundary_model is not used: the discrete
 // geometry; regions/physical selections are refused). Throws InputError for bad
 // options, InvariantError if a part or the merged mesh breaks an invariant (check_mesh).

@@ -139,8 +139,9 @@ TEST(OptimizePartitioned, TwoRanksGiveTheSameMeshAsOne) {
   TetMesh one = input;
   SerialExchange serial;
   optimize_partitioned(one, o, {3, 2}, serial);
+  // Rank 0 holds the mesh; rank 1 only gets its parts (its own mesh is empty, and stays so).
   ThreadRanks ranks(2);
-  std::vector<TetMesh> out(2, input);
+  std::vector<TetMesh> out{input, TetMesh{}};
   std::vector<std::thread> threads;
   for (int k = 0; k < 2; ++k)
     threads.emplace_back([&, k] {
@@ -148,11 +149,11 @@ TEST(OptimizePartitioned, TwoRanksGiveTheSameMeshAsOne) {
       optimize_partitioned(out[k], o, {3, 2}, ex);
     });
   for (auto& t : threads) t.join();
-  for (const TetMesh& m : out) {
-    EXPECT_EQ(m.xyz, one.xyz);
-    EXPECT_EQ(m.tets, one.tets);
-    EXPECT_EQ(m.tris, one.tris);
-  }
+  EXPECT_EQ(out[0].xyz, one.xyz);
+  EXPECT_EQ(out[0].tets, one.tets);
+  EXPECT_EQ(out[0].tris, one.tris);
+  EXPECT_EQ(out[1].nb_tets(), 0);
+  EXPECT_EQ(out[1].nb_vertices(), 0);
 }
 
 TEST(OptimizePartitioned, RefusesASelectionOfVolumesAndBadCounts) {
@@ -191,6 +192,51 @@ TEST(MergeParts, PartsPutBackUnchangedGiveTheSameTetsAndOverlapsAreRefused) {
   EXPECT_EQ(tets_of(back), tets_of(m));
   TetMesh again = m;
   EXPECT_THROW(merge_parts(again, {&xs[0], &xs[0]}, {&xs[0].mesh, &xs[0].mesh}), InvariantError);
+}
+
+TEST(PackPart, TheModelAndTheBlocksRoundTrip) {
+  ModelInfo m;
+  m.name = "t";
+  m.source = "/x/t.msh";
+  m.entities = {{0, 1, {}}, {2, 7, {-3, 4}}, {3, 1, {7}}};
+  m.groups = {{3, 10, "bone", {1}}, {2, 11, "", {7}}};
+  m.origin = ElementOrigin::kMeshFile;
+  m.file_blocks = {{2, 7, 2}, {3, 1, 4}};
+  m.high_order.order = 2;
+  m.high_order.tags = {5};                        // not carried: a part has none
+  m.periodic.push_back({2, 7, 8, {}, {1}, {2}});  // not carried: a part's nodes are pinned
+  std::vector<ElementBlock> blocks = {{0, 1, 15, {101}, {0}, {}},
+                                      {1, 3, 1, {5, 6}, {0, 1, 1, 2}, {9, 9}}};
+  std::vector<char> buf;
+  pack_model(m, buf);
+  pack_blocks(blocks, buf);
+  std::size_t pos = 0;
+  ModelInfo back;
+  std::vector<ElementBlock> bb;
+  unpack_model(buf, pos, back);
+  unpack_blocks(buf, pos, bb);
+  EXPECT_EQ(pos, buf.size());
+  EXPECT_EQ(back.name, m.name);
+  EXPECT_EQ(back.source, m.source);
+  ASSERT_EQ(back.entities.size(), 3u);
+  EXPECT_EQ(back.entities[1].boundary, m.entities[1].boundary);
+  ASSERT_EQ(back.groups.size(), 2u);
+  EXPECT_EQ(back.groups[0].name, "bone");
+  EXPECT_EQ(back.groups[1].entities, m.groups[1].entities);
+  EXPECT_EQ(back.origin, ElementOrigin::kMeshFile);
+  EXPECT_EQ(back.file_blocks, m.file_blocks);
+  EXPECT_EQ(back.high_order.order, 2);
+  EXPECT_TRUE(back.high_order.tags.empty());
+  EXPECT_TRUE(back.periodic.empty());
+  ASSERT_EQ(bb.size(), 2u);
+  EXPECT_EQ(bb[1].gmsh_type, 1);
+  EXPECT_EQ(bb[1].tags, blocks[1].tags);
+  EXPECT_EQ(bb[1].nodes, blocks[1].nodes);
+  EXPECT_EQ(bb[1].medit_refs, blocks[1].medit_refs);
+  buf.resize(buf.size() - 3);
+  pos = 0;
+  unpack_model(buf, pos, back);
+  EXPECT_THROW(unpack_blocks(buf, pos, bb), InvariantError);
 }
 
 TEST(PackPart, RoundTripAndShortBufferRefused) {
