@@ -24,11 +24,11 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A hexagonal fan: vertex 0 at the origin, 1..6 on the unit circle in z = 0, apex 7 below.
-TetMesh fan() {
+// A hexagonal fan: vertex 0 at the origin, 1..6 on the unit circle in z = 0, apex 7 at depth h.
+TetMesh fan(double h = 1) {
   std::vector<std::array<double, 3>> p{{0, 0, 0}};
   for (int i = 0; i < 6; ++i) p.push_back({std::cos(i * kPi / 3), std::sin(i * kPi / 3), 0});
-  p.push_back({0, 0, -1});
+  p.push_back({0, 0, -h});
   std::vector<std::array<int, 4>> t;
   for (int i = 0; i < 6; ++i) t.push_back({0, 1 + i, 1 + (i + 1) % 6, 7});
   return testing::make_tet_mesh(p, t);
@@ -65,13 +65,18 @@ TEST(SurfaceFolds, AMoveThatTurnsATriangleOverFoldsASmallOneDoesNot) {
 }
 
 TEST(SurfaceFolds, AFeatureMayGetFlatterButNotSharper) {
-  // The rim edges (i, i+1) turn by about 135 degrees (cos -0.71 < kFoldFloor) between the top
-  // and the side triangles: raising vertex 0 flattens them, lowering it sharpens them.
-  const TetMesh m = fan();
+  // With the apex at depth 0.2 the rim edges (i, i+1) turn by about 167 degrees (cos -0.97 <
+  // kFoldFloor) between the top and the side triangles: raising vertex 0 flattens them, lowering
+  // it sharpens them. With the apex at depth 1 (135 degrees, above the floor) both are free.
+  const TetMesh m = fan(0.2);
   const BoundaryFans fans = boundary_fans(m);
   const double up[3] = {0, 0, 0.05}, down[3] = {0, 0, -0.05};
   EXPECT_FALSE(move_folds_surface(m, fans, 0, up));
   EXPECT_TRUE(move_folds_surface(m, fans, 0, down));
+  const TetMesh deep = fan(1);
+  const BoundaryFans deep_fans = boundary_fans(deep);
+  EXPECT_FALSE(move_folds_surface(deep, deep_fans, 0, up));
+  EXPECT_FALSE(move_folds_surface(deep, deep_fans, 0, down));
 }
 
 // Two tets on the edge (a, b) = (0, 1) under the surface triangles (0, 1, 2) and (0, 1, 3),
