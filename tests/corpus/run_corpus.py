@@ -157,7 +157,8 @@ if not crash(rc, err, "convert") and rc != 0:
         sys.exit(0)
     fail("convert: exit %d: %s" % (rc, err.strip()))
 if not failures:
-    args = [a.cvtmesh, "optimize", inp, "-o", out, "-q"]
+    # Not quiet: its notes (a fallback, a restore) show in `ctest -V` (one progress line a phase).
+    args = [a.cvtmesh, "optimize", inp, "-o", out]
     if a.method:
         args += ["--method", a.method]
     rc, _, err = run(args)
