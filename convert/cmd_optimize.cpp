@@ -1,5 +1,4 @@
 // cvtmesh optimize IN -o OUT [--method M] [the options of core/pipeline/option_schema.h].
-#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <memory>

@@ -204,8 +204,9 @@ BoundaryFlipStats flip_boundary_edges(TetMesh& mesh, const BoundaryModel& model,
         }
       }
       if (best_min <= old_min + o.min_gain) continue;
-      if (!surface_flip_within(mesh, model, fans, p.f1, p.f2, a, b, c, d, o.hausdorff)) continue;
+      // The fold check first: a few normals, against the Hausdorff check's distance queries.
       if (flip_folds_surface(mesh, fans, p.f1, p.f2, a, b, c, d, cos_flat)) continue;
+      if (!surface_flip_within(mesh, model, fans, p.f1, p.f2, a, b, c, d, o.hausdorff)) continue;
       // Volume change: new minus old.
       double dv = 0;
       for (const auto& t : best_tets)

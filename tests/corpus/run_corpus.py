@@ -71,20 +71,18 @@ import numpy as np
 nt, nx, _ = gmsh.model.mesh.getNodes()
 X = np.zeros((int(nt.max()) + 1 if len(nt) else 1, 3))
 X[nt.astype(np.int64)] = np.asarray(nx).reshape(-1, 3)
-T, R = [], []
-for _, e in gmsh.model.getEntities(3):
-    ty, _, nd = gmsh.model.mesh.getElements(3, e)
-    for y, n in zip(ty, nd):
-        if y == 4:
-            T.append(np.asarray(n, dtype=np.int64).reshape(-1, 4))
-            R.append(np.full(len(T[-1]), e))
-F, S = [], []
-for _, e in gmsh.model.getEntities(2):
-    ty, _, nd = gmsh.model.mesh.getElements(2, e)
-    for y, n in zip(ty, nd):
-        if y == 2:
-            F.append(np.asarray(n, dtype=np.int64).reshape(-1, 3))
-            S.append(np.full(len(F[-1]), e))
+def by_entity(dim, gmsh_type, width):
+    """The elements of one type on the entities of dim, and the entity of each."""
+    el, ent = [], []
+    for _, e in gmsh.model.getEntities(dim):
+        ty, _, nd = gmsh.model.mesh.getElements(dim, e)
+        for y, n in zip(ty, nd):
+            if y == gmsh_type:
+                el.append(np.asarray(n, dtype=np.int64).reshape(-1, width))
+                ent.append(np.full(len(el[-1]), e))
+    return el, ent
+T, R = by_entity(3, 4, 4)
+F, S = by_entity(2, 2, 3)
 if T and F:
     T, R, F, S = np.vstack(T), np.concatenate(R), np.vstack(F), np.concatenate(S)
     key = lambda a: np.ascontiguousarray(np.sort(a, axis=1)).view(np.dtype((np.void, 24))).ravel()
