@@ -66,6 +66,9 @@ PartitionedResult optimize_partitioned(TetMesh& mesh, const OptimizeOptions& opt
   std::vector<char> previous_interface;
   OptimizeOptions so = options;
   so.progress = nullptr;
+  // A part's quality is not the mesh's: whether to refine the interior is no part's decision
+  // (an explicit refine_interior still applies in every part).
+  so.auto_refine = false;
   const bool free = !options.fix_boundary;
   if (free) {
     // The free boundary in each part, on the part's own triangles (the discrete geometry: the

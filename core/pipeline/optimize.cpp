@@ -694,7 +694,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
     const Delaunay3Stats st = refine_interior3(mesh, o.refine_interior);
     if (st.nb_steiner > 0)
       r.notes.push_back(std::to_string(st.nb_steiner) +
-                        " interior vertices added before Lloyd (--refine-interior)");
+                        " interior vertices added before Lloyd (the interior refinement)");
   }
   // The default method moves the boundary (issue 13; core/boundary/) unless fix_boundary.
   const bool free_boundary = !o.fix_boundary && method == "cvdt+swap+smooth";
@@ -902,6 +902,55 @@ Variant try_variant(const TetMesh& input, const std::string& method, const Optim
   return v;
 }
 
+// The quality targets (the issues' figures at every size) below which auto_refine tries more.
+constexpr double kTargetAverage = 0.85, kTargetQmin = 0.40;
+
+// The automatic interior refinement (OptimizeOptions::auto_refine): on a coarse model whose
+// result misses the targets, the run again with TetGen's interior refinement before Lloyd (the
+// bound 1.5, then 1.2: the Init's too few interior vertices), the first result no worse on any
+// quality row than the one in hand and better on Q_min or the average kept.
+void try_refined(const TetMesh& input, const std::string& method, const OptimizeOptions& kept,
+                 const QualityStats* ref, MeshData& data, OptimizeResult& r) {
+  const QualityStats now = quality_stats(data.tet, "");
+  if (now.q_avg >= kTargetAverage && now.q_min >= kTargetQmin) return;
+  for (double bound : {1.5, 1.2}) {
+    OptimizeOptions ro = kept;
+    ro.refine_interior = bound;
+    Variant v = try_variant(input, method, ro, now, ref);
+    char what[96];
+    std::snprintf(what, sizeof what, "the run with the interior refined (bound %.1f)", bound);
+    if (!v.error.empty()) {
+      r.notes.push_back(std::string(what) + " did not finish (" + v.error + ")");
+      continue;
+    }
+    if (!v.kept()) {
+      r.notes.push_back(std::string(what) + " is not kept (" + v.worse + ")");
+      continue;
+    }
+    const QualityStats q = quality_stats(v.mesh, "");
+    if (q.q_min <= now.q_min && q.q_avg <= now.q_avg) {
+      r.notes.push_back(std::string(what) + " is not kept (no better)");
+      continue;
+    }
+    char buf[224];
+    std::snprintf(buf, sizeof buf,
+                  "%s is kept: %ld -> %ld tets, average Q %.4f -> %.4f, Q_min %.4f -> %.4f "
+                  "(--no-auto-refine: without)",
+                  what, static_cast<long>(data.tet.nb_tets()), static_cast<long>(v.mesh.nb_tets()),
+                  now.q_avg, q.q_avg, now.q_min, q.q_min);
+    std::vector<std::string> notes = r.notes;
+    notes.push_back(buf);
+    if (!v.rn.worse.empty()) notes.push_back(restore_succeeded(method, v.rn, v.result));
+    notes.insert(notes.end(), v.result.notes.begin(), v.result.notes.end());
+    const QualityStats before = r.before;
+    r = v.result;
+    r.before = before;
+    r.notes = notes;
+    data.tet = std::move(v.mesh);
+    return;
+  }
+}
+
 }  // namespace
 
 OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
@@ -960,6 +1009,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   }
   std::string failure;
   const QualityStats* ref = o.never_worse ? &r.before : nullptr;
+  OptimizeOptions kept = oo;  // the options of the run whose result is kept
   try {
     RestoreNote rn;
     data.tet = run_method3(input, method, oo, r, ref, &rn);
@@ -983,6 +1033,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     no.coarsen_surface = 0;
     Variant v = try_variant(input, method, no, r.before, ref);
     if (v.kept()) {
+      kept = no;
       std::vector<std::string> notes = r.notes;
       notes.push_back(failure + "; '" + method +
                       "' without the surface coarsening is kept instead");
@@ -1010,6 +1061,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     fo.fix_boundary = true;
     Variant v = try_variant(input, method, fo, r.before, ref);
     if (v.kept()) {
+      kept = fo;
       if (!v.rn.worse.empty()) r.notes.push_back(restore_succeeded(method, v.rn, r));
       r.notes.push_back("'" + method + "' with the boundary fixed is kept instead");
       data.tet = std::move(v.mesh);
@@ -1061,6 +1113,9 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     }
   } else {
     r.method = method;
+    if (o.auto_refine && o.refine_interior == 0 && method == "cvdt+swap+smooth" &&
+        input.nb_tets() <= o.auto_refine_max_tets)
+      try_refined(input, method, kept, ref, data, r);
   }
   r.after = quality_stats(data.tet, r.method);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

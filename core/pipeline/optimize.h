@@ -139,6 +139,13 @@ struct OptimizeOptions {
   // exceeds this times their shortest edge, none on the boundary (core/delaunay/
   // refine_interior3.h); 0 = none. For an Init with too few interior vertices (a coarse model).
   double refine_interior = 0;
+  // With refine_interior = 0 and the default method on a coarse model (at most
+  // auto_refine_max_tets tets) whose result misses the quality targets (average Q 0.85, Q_min
+  // 0.40): the run is repeated with refine_interior 1.5, then 1.2, and the first result that is
+  // no worse on any quality row (Q_min, min and max dihedral angle, average Q) and better on
+  // Q_min or the average is kept (the notes say which; the element count grows).
+  bool auto_refine = true;
+  int auto_refine_max_tets = 200000;
   // The reference geometry of a free boundary: null, or a function returning a model without
   // geometry = the input's own boundary triangulation (make_discrete_boundary); the front ends
   // with the CAD loaded pass make_gmsh_cad_boundary_if_cad (core/io/gmsh_cad_boundary.h).

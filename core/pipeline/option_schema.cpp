@@ -234,6 +234,17 @@ std::vector<OptionSpec> make_schema() {
     s.has_special = true;
     v.push_back(s);
   }
+  v.push_back(boolean("auto_refine", "--no-auto-refine", &O::auto_refine,
+                      "default method, no --refine-interior: on a coarse model whose result "
+                      "misses average Q 0.85 or Q_min 0.40, the run with the interior refined "
+                      "(bound 1.5, then 1.2) is kept where it is no worse on every quality row "
+                      "(the flag turns it off)",
+                      kDim3));
+  v.push_back(number("auto_refine_max_tets", "--auto-refine-max-tets", &O::auto_refine_max_tets, 0,
+                     2e9,
+                     "auto_refine tries the refinement only on inputs of at most this "
+                     "many tets",
+                     kDim3));
   // Issue 14 (robust branch): Python only for now; the CLI has --allow-worse (cmd_optimize.cpp).
   v.push_back(boolean("never_worse", "", &O::never_worse,
                       "never worse than the input: a result with a lower Q_min or min angle or a "

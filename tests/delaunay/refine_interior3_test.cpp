@@ -65,7 +65,9 @@ TEST(RefineInterior3, RaisesTheAverageOfACoarseModelThroughOptimize) {
   const std::string path = testing::shared_path("data/models/igl_decimated-knight.off");
   const MeshData init = read_mesh(path);
   MeshData plain = init, refined = init;
-  const OptimizeResult a = optimize(plain, OptimizeOptions{});
+  OptimizeOptions no_auto;
+  no_auto.auto_refine = false;
+  const OptimizeResult a = optimize(plain, no_auto);
   OptimizeOptions o;
   o.refine_interior = 1.5;
   const OptimizeResult b = optimize(refined, o);

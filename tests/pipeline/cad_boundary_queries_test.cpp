@@ -71,6 +71,7 @@ TEST(CadBoundaryQueries, OnlyProjectionsReachTheCadAFewPerBoundaryVertex) {
   auto counts = std::make_shared<Counts>();
   OptimizeOptions o;
   o.max_iterations = 10;
+  o.auto_refine = false;  // one run: the queries per movable vertex of one run are bounded
   o.boundary_model = [counts](const TetMesh& m, const BoundaryModelOptions& bo) {
     BoundaryModel b = make_gmsh_cad_boundary_if_cad(m, bo);
     if (b.geometry) b.geometry = std::make_shared<CountingGeometry>(b.geometry, counts);
