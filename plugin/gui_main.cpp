@@ -29,6 +29,7 @@
 #include "plugin/gmsh_inprocess.h"
 #include "plugin/panel.h"
 #include "plugin/stale_watch.h"
+#include "core/util/wait_policy.h"
 
 namespace {
 
@@ -407,6 +408,7 @@ class App {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cvtmesh::prefer_passive_openmp_threads(argv);
   Args args;
   if (const int stop = parse(argc, argv, args); stop >= 0) return stop;
   try {

@@ -24,6 +24,7 @@
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/pipeline/optimize.h"
+#include "core/util/wait_policy.h"
 #include "plugin/onelab_remote.h"
 #include "plugin/panel.h"
 
@@ -208,6 +209,7 @@ void check(plugin::RemoteOnelab& tree) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cvtmesh::prefer_passive_openmp_threads(argv);
   std::unique_ptr<plugin::RemoteOnelab> tree;
   try {
     tree = plugin::RemoteOnelab::connect(argc, argv);

@@ -9,8 +9,10 @@
 #include "convert/cli_common.h"
 #include "convert/commands.h"
 #include "convert/mpi/mpi_exchange.h"
+#include "core/util/wait_policy.h"
 
 int main(int argc, char** argv) {
+  cvtmesh::prefer_passive_openmp_threads(argv);
   MPI_Init(&argc, &argv);
   cvtmesh::cli::exchange_factory() = [] {
     return std::unique_ptr<cvtmesh::PartExchange>(new cvtmesh::cli::MpiExchange());

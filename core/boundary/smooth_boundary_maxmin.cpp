@@ -75,7 +75,7 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
     std::vector<double> worst(static_cast<std::size_t>(nv), kInf);
     const int nt = mesh.nb_tets();
     std::vector<std::array<double, 2>> tet_q(static_cast<std::size_t>(nt));
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
     for (int t = 0; t < nt; ++t)
       if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) tet_q[t] = measures(mesh, {true, t});
     for (int t = 0; t < nt; ++t) {

@@ -307,7 +307,7 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
   {
     double sum = 0, q_min = kInf, a_min = kInf, t_min = kInf;
     long live = 0;
-#pragma omp parallel for schedule(static, 4096) reduction(+ : sum, live) reduction(min : q_min, a_min)
+#pragma omp parallel for schedule(static, 4096) reduction(+ : sum, live) reduction(min : q_min, a_min) if (nt > 4096)
     for (int t = 0; t < nt; ++t)
       if (tet_of(mesh, t)[0] >= 0) {
         const double q = q_of(mesh, t);

@@ -51,7 +51,7 @@ void first_round_moves(TetMesh& m, const VertexTets& star, const std::vector<dou
   for (int i = 0; i < np; ++i) slot[pending[i]] = i;
   std::vector<char> careful(np, 0);
   std::vector<char> bad(nt, 0);
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     if (tv[0] < 0 || (slot[tv[0]] < 0 && slot[tv[1]] < 0 && slot[tv[2]] < 0 && slot[tv[3]] < 0))
@@ -64,7 +64,7 @@ void first_round_moves(TetMesh& m, const VertexTets& star, const std::vector<dou
       for (int k = 0; k < 4; ++k)
         if (const int i = slot[m.tets[4 * t + k]]; i >= 0) careful[i] = 1;
   std::vector<double> old(3 * static_cast<std::size_t>(np));
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (np > 1024)
   for (int i = 0; i < np; ++i) {
     double* x = &m.xyz[3 * pending[i]];
     for (int d = 0; d < 3; ++d) old[3 * i + d] = x[d];

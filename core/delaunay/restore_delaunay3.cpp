@@ -112,7 +112,7 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFace
   // Work stack of (tet, face); entries are re-checked when popped (slots get reused).
   std::vector<std::pair<int, int>> stack;
   std::vector<unsigned char> bad(nt, 0);  // bit f: face f is to be flipped (tested in parallel)
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t)
     if (m.tets[4 * t] >= 0)
       for (int f = 0; f < 4; ++f)

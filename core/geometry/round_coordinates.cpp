@@ -19,7 +19,7 @@ double round_to_digits(double x, int digits) {
 void round_coordinates(std::vector<double>& xyz, int digits, const std::vector<char>& which) {
   if (digits <= 0 || digits >= 17) return;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xyz.size());
-#pragma omp parallel for schedule(static, 4096)
+#pragma omp parallel for schedule(static, 4096) if (n > 4096)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     if (which.empty() || which[i / 3]) xyz[i] = round_to_digits(xyz[i], digits);
 }

@@ -380,7 +380,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       long bad = 0;
       int first_bad = m.nb_tets();
       const int nt = m.nb_tets();
-#pragma omp parallel for schedule(static, 1024) reduction(+ : bad) reduction(min : first_bad)
+#pragma omp parallel for schedule(static, 1024) reduction(+ : bad) reduction(min : first_bad) if (nt > 1024)
       for (int t = 0; t < nt; ++t) {
         const int* v = &m.tets[4 * static_cast<std::size_t>(t)];
         if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0) {

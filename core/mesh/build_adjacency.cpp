@@ -30,7 +30,7 @@ void build_adjacency(TetMesh& mesh) {
       });
   // The first bucket holding a face of more than two tets (nv if none).
   int bad = nv;
-#pragma omp parallel for schedule(dynamic, 4096) reduction(min : bad)
+#pragma omp parallel for schedule(dynamic, 4096) reduction(min : bad) if (nv > 4096)
   for (int a = 0; a < nv; ++a) {
     const FaceRecord *first = fb.begin_of(a), *last = fb.end_of(a);
     for (const FaceRecord* i = first; i < last;) {

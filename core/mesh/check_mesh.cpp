@@ -23,7 +23,7 @@ void problem(MeshCheck& r, const std::string& msg) {
 int last_non_positive_tet(const TetMesh& m) {
   const int nt = m.nb_tets();
   int bad = -1;
-#pragma omp parallel for schedule(static, 1024) reduction(max : bad)
+#pragma omp parallel for schedule(static, 1024) reduction(max : bad) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     if (tv[0] >= 0 && orient3d(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])) <= 0)
@@ -63,7 +63,7 @@ MeshCheck check_mesh(const TetMesh& m) {
   std::vector<int> holders(constrained.size(), 0), open_holders(constrained.size(), 0);
   // Orientation, the costly part, in parallel (a flag per tet: the report stays in tet order).
   std::vector<char> positive(nt, 1);
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     bool in_range = tv[0] >= 0;
@@ -100,7 +100,7 @@ MeshCheck check_mesh(const TetMesh& m) {
     return false;
   };
   std::vector<char> suspect(nt, 0);
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * t];
     if (tv[0] < 0) continue;

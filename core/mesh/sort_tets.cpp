@@ -88,7 +88,7 @@ void sort_tets_spatially(TetMesh& m) {
   // Lloyd iteration sorts every 4th iteration: ~2.5 s of one thread at 9M tets).
   std::vector<std::pair<std::uint64_t, int>> key(static_cast<std::size_t>(nt));
   int live = 0;
-#pragma omp parallel for schedule(static, 4096) reduction(+ : live)
+#pragma omp parallel for schedule(static, 4096) reduction(+ : live) if (nt > 4096)
   for (int t = 0; t < nt; ++t) {
     const int* tv = &m.tets[4 * static_cast<std::size_t>(t)];
     if (tv[0] < 0) {
@@ -104,7 +104,7 @@ void sort_tets_spatially(TetMesh& m) {
   __gnu_parallel::sort(key.begin(), key.end());
   key.resize(static_cast<std::size_t>(live));
   std::vector<int> new_id(static_cast<std::size_t>(nt), -1);
-#pragma omp parallel for schedule(static, 4096)
+#pragma omp parallel for schedule(static, 4096) if (live > 4096)
   for (int i = 0; i < live; ++i) new_id[key[i].second] = i;
   const bool has_adj = m.adj.size() == m.tets.size();
   const bool has_tags = m.tet_tags.size() == static_cast<std::size_t>(nt);
@@ -112,7 +112,7 @@ void sort_tets_spatially(TetMesh& m) {
   std::vector<std::size_t> tags;
   if (has_adj) adj.resize(tets.size());
   if (has_tags) tags.resize(live);
-#pragma omp parallel for schedule(static, 4096)
+#pragma omp parallel for schedule(static, 4096) if (live > 4096)
   for (int i = 0; i < live; ++i) {
     const int t = key[i].second;
     for (int k = 0; k < 4; ++k) {

@@ -127,7 +127,7 @@ P1System p1_system(const TriMesh2& mesh) {
 
 void p1_multiply(const P1System& s, const std::vector<double>& x, std::vector<double>& y) {
   y.resize(s.n);
-#pragma omp parallel for schedule(static, 2048)
+#pragma omp parallel for schedule(static, 2048) if (s.n > 2048)
   for (int i = 0; i < s.n; ++i) {
     double sum = 0;
     for (long k = s.row_ptr[i]; k < s.row_ptr[i + 1]; ++k) sum += s.val[k] * x[s.col[k]];

@@ -49,7 +49,7 @@ std::vector<double> element_qualities(const TetMesh& mesh, Measure m) {
   const int nt = mesh.nb_tets();
   std::vector<double> q(nt);
   std::vector<char> live(nt);
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
     live[t] = v[0] >= 0;
@@ -132,7 +132,7 @@ QualityStats reduce_tets(const TetMesh& mesh, const std::string& label, bool tab
   constexpr int kBlock = 4096;
   const int nb = (nt + kBlock - 1) / kBlock;
   std::vector<Part> parts(static_cast<std::size_t>(nb));
-#pragma omp parallel for schedule(static, 4)
+#pragma omp parallel for schedule(static, 4) if (nb > 4)
   for (int b = 0; b < nb; ++b) {
     Part& p = parts[b];
     const int end = std::min(nt, (b + 1) * kBlock);
@@ -191,7 +191,7 @@ QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
 double min_quality(const TetMesh& mesh, Measure m) {
   const int nt = mesh.nb_tets();
   double lo = std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static, 1024) reduction(min : lo)
+#pragma omp parallel for schedule(static, 1024) reduction(min : lo) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
     if (v[0] < 0) continue;

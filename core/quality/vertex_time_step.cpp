@@ -36,7 +36,7 @@ VertexTimeSteps vertex_time_steps(const TetMesh& mesh) {
   // Each tet's terms in parallel, then summed in tet order: the same sums for any thread count.
   const int nt = mesh.nb_tets();
   std::vector<std::array<double, 5>> terms(static_cast<std::size_t>(nt));
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t) {
     const int* v = &mesh.tets[4 * static_cast<std::size_t>(t)];
     if (v[0] >= 0)

@@ -27,7 +27,7 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
   const VertexTets star = vertex_tets(mesh);
   std::vector<double> q(static_cast<std::size_t>(nt), std::numeric_limits<double>::infinity());
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t)
     if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0)
       q[t] = quality_of(mesh, t, options.measure);
@@ -59,7 +59,7 @@ SmoothStats smooth_laplacian(TetMesh& mesh, const SmoothOptions& options) {
   std::vector<double> tdt;
   if (guard) {
     tdt.assign(static_cast<std::size_t>(nt), std::numeric_limits<double>::infinity());
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
     for (int t = 0; t < nt; ++t)
       if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0)
         tdt[t] = quality_of(mesh, t, Measure::kTimeStep);

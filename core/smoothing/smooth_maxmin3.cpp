@@ -85,7 +85,7 @@ MaxMinStats smooth_maxmin3(TetMesh& mesh, const MaxMinOptions& o) {
     tq[t] = quality_of(mesh, t, Measure::kQ);
     ta[t] = quality_of(mesh, t, Measure::kMinAngle);
   };
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt > 1024)
   for (int t = 0; t < nt; ++t)
     if (tet_of(mesh, t)[0] >= 0) refresh(t);
   MaxMinStats stats;

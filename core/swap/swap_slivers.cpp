@@ -105,7 +105,7 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
   refused.assign(q.size(), 0);
   std::vector<int> free_slots;
   const int nt0 = mesh.nb_tets();
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (nt0 > 1024)
   for (int t = 0; t < nt0; ++t)
     if (mesh.tets[4 * static_cast<std::size_t>(t)] >= 0) q[t] = quality_of(mesh, t, measure);
   for (int t = 0; t < nt0; ++t) {
@@ -297,7 +297,7 @@ SwapStats swap_slivers(TetMesh& mesh, const SwapOptions& options) {
       const int chunk_stamp = stamp;
       {
         evals.resize(c1 - c0);
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) if (c1 - c0 > 64)
         for (std::ptrdiff_t i = static_cast<std::ptrdiff_t>(c0);
              i < static_cast<std::ptrdiff_t>(c1); ++i) {
           Evaluation& ev = evals[i - c0];

@@ -82,5 +82,27 @@ TEST(Determinism, Perturb2dThenOptimize2dBinaryMsh) {
                        "opt2d.msh");
 }
 
+// The programs start themselves again with OMP_WAIT_POLICY=passive when neither it nor
+// GOMP_SPINCOUNT is set (core/util/wait_policy.h): that path (both unset) and a run that keeps
+// its spinning threads (active) give the same bytes, and the arguments reach the new image.
+TEST(Determinism, SameFileWhetherTheProgramRestartsWithPassiveThreads) {
+  const std::string dir = testing::temp_dir();
+  const std::string args = "optimize '" + testing::geo_path("cube_sphere.geo") +
+                           "' --set h=0.2 --set h_ball=0.12 --max-iterations 5 --binary -q "
+                           "-o w.msh";
+  auto run = [&](const std::string& env) {
+    std::filesystem::remove(dir + "/w.msh");
+    std::string log;
+    const int rc = testing::run(
+        "cd '" + dir + "' && env " + env + " " + testing::cli_path() + " " + args, &log);
+    EXPECT_EQ(rc, 0) << env << "\n" << log;
+    return slurp(dir + "/w.msh");
+  };
+  const std::string restarted = run("-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT");
+  const std::string spinning = run("-u GOMP_SPINCOUNT OMP_WAIT_POLICY=active");
+  ASSERT_GT(restarted.size(), 1000u);
+  EXPECT_TRUE(restarted == spinning);
+}
+
 }  // namespace
 }  // namespace cvtmesh
