@@ -234,12 +234,17 @@ std::vector<OptionSpec> make_schema() {
     s.has_special = true;
     v.push_back(s);
   }
-  v.push_back(boolean("auto_refine", "--no-auto-refine", &O::auto_refine,
-                      "default method, no --refine-interior: on a coarse model whose result "
-                      "misses average Q 0.85 or Q_min 0.40, the run with the interior refined "
-                      "(bound 1.5, then 1.2) is kept where it is no worse on every quality row "
-                      "(the flag turns it off)",
-                      kDim3));
+  {
+    OptionSpec s = boolean("auto_refine", "--no-auto-refine", &O::auto_refine,
+                           "default method, no --refine-interior: on a coarse model whose result "
+                           "misses average Q 0.85 or Q_min 0.40, the run with the interior "
+                           "refined (bound 1.5, then 1.2) is kept where it is no worse on every "
+                           "quality row (more elements; the flag turns it off)",
+                           kDim3);
+    s.fronts = kAllFronts;
+    s.panel = "4Refine a coarse interior";
+    v.push_back(s);
+  }
   v.push_back(number("auto_refine_max_tets", "--auto-refine-max-tets", &O::auto_refine_max_tets, 0,
                      2e9,
                      "auto_refine tries the refinement only on inputs of at most this "

@@ -12,8 +12,8 @@
 namespace cvtmesh {
 
 // When neither OMP_WAIT_POLICY nor GOMP_SPINCOUNT is set, sets OMP_WAIT_POLICY=passive and runs
-// this program again with the same arguments (execv of /proc/self/exe); returns (and the
-// program goes on as it is) when either is set or the new image cannot be started. Call it
+// this program again with the same arguments (execv of the file /proc/self/exe names); returns (and
+// the program goes on as it is) when either is set or the new image cannot be started. Call it
 // first in main, before MPI_Init or any thread.
 void prefer_passive_openmp_threads(char** argv);
 
