@@ -1,4 +1,6 @@
 // cvtmesh optimize IN -o OUT [--method M] [the options of core/pipeline/option_schema.h].
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -6,6 +8,7 @@
 
 #include "convert/cli_common.h"
 #include "convert/json_report.h"
+#include "convert/limits.h"
 #include "convert/progress_display.h"
 #include "convert/schema_cli.h"
 #include "core/io/gmsh_cad_boundary.h"
@@ -168,6 +171,9 @@ void register_optimize(CLI::App& app) {
            return kExitOk;
          }
          opt->progress = [progress](const OptimizeProgress& p) { progress->update(p); };
+         // --time-limit: optimize starts no optional run that would not fit (a fifth of what is
+         // left kept for writing).
+         if (std::isfinite(seconds_left())) opt->time_budget = std::max(0.0, 0.8 * seconds_left());
          OptimizeResult r = optimize(d, *opt);
          // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.
          if (d.dim == 3 && d.model().high_order.order == 2) {

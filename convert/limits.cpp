@@ -6,11 +6,24 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <thread>
 
 #include "core/io/atomic_file.h"
 
 namespace cvtmesh::cli {
+namespace {
+
+// The deadline of --time-limit (steady clock), if any.
+bool g_has_deadline = false;
+std::chrono::steady_clock::time_point g_deadline;
+
+}  // namespace
+
+double seconds_left() {
+  if (!g_has_deadline) return std::numeric_limits<double>::infinity();
+  return std::chrono::duration<double>(g_deadline - std::chrono::steady_clock::now()).count();
+}
 
 void add_limit_options(CLI::App& app, Limits& limits) {
   app.add_option("--max-memory", limits.max_memory_mb,
@@ -33,6 +46,10 @@ void apply_limits(const Limits& limits) {
   }
   if (limits.time_limit_s > 0) {
     const double s = limits.time_limit_s;
+    g_has_deadline = true;
+    g_deadline = std::chrono::steady_clock::now() +
+                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     std::chrono::duration<double>(s));
     std::thread([s] {
       std::this_thread::sleep_for(std::chrono::duration<double>(s));
       abandon_pending_outputs();

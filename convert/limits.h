@@ -19,4 +19,8 @@ void add_limit_options(CLI::App& app, Limits& limits);
 // thread). Throws CLI::ValidationError for a limit it cannot set.
 void apply_limits(const Limits& limits);
 
+// Seconds left before the time limit's deadline (+inf without a limit): the optional work of a
+// run (optimize's interior refinement of a coarse model) is not started when it would not fit.
+double seconds_left();
+
 }  // namespace cvtmesh::cli

@@ -146,6 +146,10 @@ struct OptimizeOptions {
   // Q_min or the average is kept (the notes say which; the element count grows).
   bool auto_refine = true;
   int auto_refine_max_tets = 200000;
+  // Wall-clock seconds the caller allows optimize() (0 = no bound; the CLI sets it from
+  // --time-limit): an optional run (auto_refine's) is not started when, at the pace of the run
+  // before it, it would end past the bound. Not a user option of the schema.
+  double time_budget = 0;
   // The reference geometry of a free boundary: null, or a function returning a model without
   // geometry = the input's own boundary triangulation (make_discrete_boundary); the front ends
   // with the CAD loaded pass make_gmsh_cad_boundary_if_cad (core/io/gmsh_cad_boundary.h).

@@ -50,6 +50,15 @@ TEST(AutoRefine, KeepsTheRefinedRunOnlyWhereNoQualityRowIsWorse) {
   EXPECT_EQ(count_notes(c, "the run with the interior refined"), 0);
   EXPECT_EQ(capped.tet.xyz, plain.tet.xyz);
   EXPECT_EQ(capped.tet.tets, plain.tet.tets);
+  // A time budget the refined run cannot fit in (the CLI's --time-limit): not tried, said so,
+  // the plain run's mesh.
+  MeshData hurried = init;
+  OptimizeOptions soon;
+  soon.time_budget = 1e-9;
+  const OptimizeResult e = optimize(hurried, soon);
+  EXPECT_EQ(count_notes(e, "is not tried: it would not end within the time limit"), 1);
+  EXPECT_EQ(hurried.tet.xyz, plain.tet.xyz);
+  EXPECT_EQ(hurried.tet.tets, plain.tet.tets);
 }
 
 }  // namespace
