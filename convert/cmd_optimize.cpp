@@ -173,7 +173,8 @@ void register_optimize(CLI::App& app) {
          opt->progress = [progress](const OptimizeProgress& p) { progress->update(p); };
          // --time-limit: optimize starts no optional run that would not fit (a fifth of what is
          // left kept for writing).
-         if (std::isfinite(seconds_left())) opt->time_budget = std::max(0.0, 0.8 * seconds_left());
+         if (const double left = seconds_left(); std::isfinite(left))
+           opt->time_budget = std::max(0.0, 0.8 * left);
          OptimizeResult r = optimize(d, *opt);
          // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.
          if (d.dim == 3 && d.model().high_order.order == 2) {

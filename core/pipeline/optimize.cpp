@@ -883,6 +883,7 @@ OptimizeResult optimize_selection(MeshData& data, const OptimizeOptions& options
 struct Variant {
   TetMesh mesh;
   OptimizeResult result;
+  QualityStats stats;  // the mesh's (when it ran through)
   RestoreNote rn;
   std::string worse;
   std::string error;
@@ -895,11 +896,27 @@ Variant try_variant(const TetMesh& input, const std::string& method, const Optim
   v.result.method = method;
   try {
     v.mesh = run_method3(input, method, o, v.result, ref, &v.rn);
-    v.worse = worse_than(quality_stats(v.mesh, ""), before);
+    v.stats = quality_stats(v.mesh, "");
+    v.worse = worse_than(v.stats, before);
   } catch (const InvariantError& e) {
     v.error = e.what();
   }
   return v;
+}
+
+// A kept variant replaces the result: its mesh and its result, the input's quality kept, the
+// notes so far, then `note`, what its restore did and its own notes.
+void adopt_variant(Variant& v, const std::string& method, const std::string& note, MeshData& data,
+                   OptimizeResult& r) {
+  std::vector<std::string> notes = r.notes;
+  notes.push_back(note);
+  if (!v.rn.worse.empty()) notes.push_back(restore_succeeded(method, v.rn, v.result));
+  notes.insert(notes.end(), v.result.notes.begin(), v.result.notes.end());
+  const QualityStats before = r.before;
+  r = v.result;
+  r.before = before;
+  r.notes = std::move(notes);
+  data.tet = std::move(v.mesh);
 }
 
 // The quality targets (the issues' figures at every size) below which auto_refine tries more.
@@ -926,8 +943,7 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
     // A refined run costs about 1.5 plain ones (more vertices; knight, fertility, t13).
     if (kept.time_budget > 0 && elapsed() + 1.5 * one_run > kept.time_budget) {
       r.notes.push_back(std::string(what) +
-                        " is not tried: it would not end within the time "
-                        "limit");
+                        " is not tried: it would not end within the time limit");
       return;
     }
     OptimizeOptions ro = kept;
@@ -941,7 +957,7 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
       r.notes.push_back(std::string(what) + " is not kept (" + v.worse + ")");
       continue;
     }
-    const QualityStats q = quality_stats(v.mesh, "");
+    const QualityStats& q = v.stats;
     if (q.q_min <= now.q_min && q.q_avg <= now.q_avg) {
       r.notes.push_back(std::string(what) + " is not kept (no better)");
       continue;
@@ -952,15 +968,7 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
                   "(--no-auto-refine: without)",
                   what, static_cast<long>(data.tet.nb_tets()), static_cast<long>(v.mesh.nb_tets()),
                   now.q_avg, q.q_avg, now.q_min, q.q_min);
-    std::vector<std::string> notes = r.notes;
-    notes.push_back(buf);
-    if (!v.rn.worse.empty()) notes.push_back(restore_succeeded(method, v.rn, v.result));
-    notes.insert(notes.end(), v.result.notes.begin(), v.result.notes.end());
-    const QualityStats before = r.before;
-    r = v.result;
-    r.before = before;
-    r.notes = notes;
-    data.tet = std::move(v.mesh);
+    adopt_variant(v, method, buf, data, r);
     return;
   }
 }
@@ -1048,16 +1056,9 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     Variant v = try_variant(input, method, no, r.before, ref);
     if (v.kept()) {
       kept = no;
-      std::vector<std::string> notes = r.notes;
-      notes.push_back(failure + "; '" + method +
-                      "' without the surface coarsening is kept instead");
-      if (!v.rn.worse.empty()) notes.push_back(restore_succeeded(method, v.rn, v.result));
-      notes.insert(notes.end(), v.result.notes.begin(), v.result.notes.end());
-      const QualityStats before = r.before;
-      r = v.result;
-      r.before = before;
-      r.notes = notes;
-      data.tet = std::move(v.mesh);
+      adopt_variant(v, method,
+                    failure + "; '" + method + "' without the surface coarsening is kept instead",
+                    data, r);
       failure.clear();
     } else if (!v.error.empty()) {
       failure += "; without the surface coarsening it failed too (" + v.error + ")";
