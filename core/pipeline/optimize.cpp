@@ -108,6 +108,8 @@ void run_lloyd3(TetMesh& mesh, const OptimizeOptions& o, OptimizeResult& r,
   const auto t0 = std::chrono::steady_clock::now();
   const LloydResult lr = lloyd_optimize_3d(mesh, lo, [&](const LloydStep& s) {
     r.lloyd_energy.push_back(s.energy);
+    r.lloyd_iteration_seconds.push_back(s.seconds_cells + s.seconds_delaunay + s.seconds_move +
+                                        s.seconds_check);
     if (!o.progress) return;
     OptimizeProgress p = lloyd_progress(s, "lloyd", quality_summary(mesh, ""));
     p.max_iterations = o.max_iterations;
@@ -570,6 +572,9 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
       OptimizeResult r2;
       run_lloyd3(mesh, again, r2, &cells);
       r.lloyd_energy.insert(r.lloyd_energy.end(), r2.lloyd_energy.begin(), r2.lloyd_energy.end());
+      r.lloyd_iteration_seconds.insert(r.lloyd_iteration_seconds.end(),
+                                       r2.lloyd_iteration_seconds.begin(),
+                                       r2.lloyd_iteration_seconds.end());
       r.seconds_lloyd += r2.seconds_lloyd;
     }
   }

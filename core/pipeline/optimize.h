@@ -190,6 +190,9 @@ struct OptimizeResult {
   std::string method;  // the method that ran (a 3D default name maps to "cvdt" in 2D)
   // 3D Lloyd phase: the energy before each iteration's move, and where its time went.
   std::vector<double> lloyd_energy;
+  // Each Lloyd iteration's own time (its cells, Delaunay flips, moves and checks; not the phase's
+  // set-up), in the order they ran.
+  std::vector<double> lloyd_iteration_seconds;
   double seconds_lloyd = 0;
   // Free boundary (empty when the boundary was fixed): measured at the end of the run.
   bool boundary_free = false;
