@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/boundary/boundary_hausdorff.h"
+#include "core/boundary/surface_folds.h"
 #include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
 #include "core/geometry/vec3.h"
@@ -169,7 +170,10 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
   p = CollapsePlan{};
   p.v = v;
   p.w = w;
-  if (v == w || model.role_of(v).role != BoundaryRole::kSurface) return CollapseCheck::kNotSurface;
+  if (v == w) return CollapseCheck::kNotSurface;
+  p.fold = o.fold_vertices && is_fold_vertex(m, model, fans, v);
+  if (!p.fold && model.role_of(v).role != BoundaryRole::kSurface) return CollapseCheck::kNotSurface;
+  // Classified on a surface of the mesh's model (not a Gmsh point or curve).
   if (v >= static_cast<int>(m.vclass.size()) || m.vclass[v].dim != 2)
     return CollapseCheck::kNotSurface;
   const int region = star_region(m, star, v);
@@ -236,7 +240,17 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
     if (orient3d(at(x[0]), at(x[1]), at(x[2]), at(x[3])) <= 0) return CollapseCheck::kInverted;
     add_tet(after, at(x[0]), at(x[1]), at(x[2]), at(x[3]));
   }
-  if (p.move_tets.empty()) return CollapseCheck::kLink;
+  // Nothing of v's star left: only a fold vertex on a single tet whose face opposite v is
+  // interior, of the same region, may go (the tet behind that face then stands on the boundary);
+  // anything else would remove a piece of the domain.
+  if (p.move_tets.empty()) {
+    if (!p.fold || p.kill_tets.size() != 1) return CollapseCheck::kLink;
+    const std::size_t t4 = 4 * static_cast<std::size_t>(p.kill_tets[0]);
+    int behind = -1;
+    for (int k = 0; k < 4; ++k)
+      if (m.tets[t4 + k] == v) behind = m.adj[t4 + k];
+    if (behind < 0 || m.tet_region[behind / 4] != region) return CollapseCheck::kLink;
+  }
   if (after.q < std::min(before.q, o.q_floor) ||
       after.angle < std::min(before.angle, o.angle_floor))
     return CollapseCheck::kQuality;
@@ -354,6 +368,44 @@ void apply_boundary_collapse(TetMesh& m, BoundaryModel& model, const CollapsePla
       if (m.tris[3 * static_cast<std::size_t>(f) + k] == p.v)
         m.tris[3 * static_cast<std::size_t>(f) + k] = p.w;
   if (p.v < static_cast<int>(model.role.size())) model.role[p.v] = {BoundaryRole::kFixed, -1};
+  if (p.fold) {
+    auto& e = model.curve_edges;
+    e.erase(std::remove_if(e.begin(), e.end(),
+                           [&](const std::array<int, 2>& x) { return x[0] == p.v || x[1] == p.v; }),
+            e.end());
+  }
+}
+
+bool is_fold_vertex(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans, int v) {
+  if (!model.movable(v) || fans.end_of(v) - fans.begin_of(v) != 3) return false;
+  const int* f = fans.begin_of(v);
+  // cos of the turn between fan triangles i and j across their common spoke (v, x); 2 if they
+  // have none.
+  auto cos_turn = [&](int i, int j) {
+    const int* t = &m.tris[3 * static_cast<std::size_t>(f[i])];
+    const int* u = &m.tris[3 * static_cast<std::size_t>(f[j])];
+    int x = -1;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (t[a] != v && t[a] == u[b]) x = t[a];
+    if (x < 0) return 2.0;
+    const Vec3 nt = cross(sub(m.point(t[1]), m.point(t[0])), sub(m.point(t[2]), m.point(t[0])));
+    const Vec3 nu = cross(sub(m.point(u[1]), m.point(u[0])), sub(m.point(u[2]), m.point(u[0])));
+    const double l = norm(nt) * norm(nu);
+    if (!(l > 0)) return 2.0;
+    // Consistently oriented triangles run through (v, x) in opposite directions: cos(turn) is
+    // the dot of their normals (reversed if they run the same way).
+    auto runs_v_to_x = [&](const int* y) {
+      for (int k = 0; k < 3; ++k)
+        if (y[k] == v && y[(k + 1) % 3] == x) return true;
+      return false;
+    };
+    return (runs_v_to_x(t) == runs_v_to_x(u) ? -1 : 1) * dot(nt, nu) / l;
+  };
+  // One triangle turned over against both others.
+  for (int i = 0; i < 3; ++i)
+    if (cos_turn(i, (i + 1) % 3) < kFoldFloor && cos_turn(i, (i + 2) % 3) < kFoldFloor) return true;
+  return false;
 }
 
 void compact_boundary_triangles(TetMesh& m) {

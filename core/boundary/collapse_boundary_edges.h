@@ -7,12 +7,15 @@
 //
 // Check (plan_boundary_collapse), then apply (apply_boundary_collapse); the driver accepts:
 //  - v must be a surface vertex of the boundary model (not on a curve, not a corner, not locked,
-//    pinned or periodic), its star of one region, its boundary triangles all of one surface
-//    entity and on the domain's boundary (no interface), its fan a closed disk; w a neighbour
-//    on one of those triangles, its star of the same single region;
+//    pinned or periodic; or, with fold_vertices, a fold vertex), its star of one region, its
+//    boundary triangles all of one surface entity and on the domain's boundary (no interface), its
+//    fan a closed disk; w a neighbour on one of those triangles, its star of the same single
+//    region;
 //  - the link condition (Dey et al., with the boundary coned to a vertex at infinity): the
 //    links of v and w meet exactly in the link of (v, w) — no duplicate tet or triangle, each
 //    surface keeps its topology (Euler characteristic, boundary edges), the volume its own;
+//    some tet of v's star not on (v, w), unless v is a fold vertex standing on one tet whose
+//    face opposite v is interior;
 //  - every changed tet positive (exact orient3d), the new star's minimum Q and dihedral angle
 //    not below min(the old star's minimum, q_floor / angle_floor), the new boundary triangles'
 //    Q not below min(the old fan's minimum, tri_floor), each new triangle turning by at most
@@ -45,6 +48,11 @@ struct BoundaryCollapseOptions {
   int passes = 10;
   double hausdorff = std::numeric_limits<double>::infinity();  // absolute
   VolumeBudget* volume_budget = nullptr;
+  // A fold vertex may go too (remove_surface_folds.h): a surface or curve vertex of valence 3
+  // one of whose triangles is turned over against the other two (each turn above
+  // acos(kFoldFloor), about 154 degrees): an input defect. Its curve edges go with it. Off for
+  // the coarsening.
+  bool fold_vertices = false;
 };
 
 enum class CollapseCheck {
@@ -62,6 +70,7 @@ enum class CollapseCheck {
 // A planned collapse of v onto w: the tets and triangles that vanish and those where v becomes w.
 struct CollapsePlan {
   int v = -1, w = -1;
+  bool fold = false;  // v is a fold vertex (BoundaryCollapseOptions::fold_vertices)
   std::vector<int> kill_tets, move_tets, kill_tris, move_tris;
   std::vector<double> delta;  // per VolumeBudget region (empty without a budget)
 };
@@ -80,6 +89,10 @@ CollapseCheck plan_boundary_collapse(const TetMesh& mesh, const BoundaryModel& m
 // tets compacted (compact_tets) before the mesh is valid again.
 void apply_boundary_collapse(TetMesh& mesh, BoundaryModel& model, const CollapsePlan& plan,
                              VolumeBudget* budget);
+
+// Whether v is a fold vertex (BoundaryCollapseOptions::fold_vertices); `fans` current.
+bool is_fold_vertex(const TetMesh& mesh, const BoundaryModel& model, const BoundaryFans& fans,
+                    int v);
 
 // Drops the triangles marked dead (tris[3f] < 0) with their surface and element tags.
 void compact_boundary_triangles(TetMesh& mesh);

@@ -13,6 +13,7 @@
 #include "core/boundary/flip_boundary_edges.h"
 #include "core/boundary/model_curve_edges.h"
 #include "core/boundary/remove_boundary_caps.h"
+#include "core/boundary/remove_surface_folds.h"
 #include "core/boundary/restore_crossing_vertices.h"
 #include "core/boundary/restore_hausdorff_vertices.h"
 #include "core/boundary/smooth_boundary_maxmin.h"
@@ -491,12 +492,16 @@ constexpr bool kFreePolishStopsAtTargets = true;
 // is 1.6x finer than its interior): surface edges shorter than that fraction of the interior
 // spacing near them collapsed (collapse_boundary_edges), under the operators' Hausdorff tolerance
 // and the volume budget. Not on an order-2 input (its mid-edge nodes follow the input's edges) or
-// a periodic one. Returns the number of surface vertices removed (they stay in the arrays, in no
-// element, fixed in b; run_method3 drops them from the result).
+// a periodic one (may_remove_surface_vertices, which the fold removal follows too). Returns the
+// number of surface vertices removed (they stay in the arrays, in no element, fixed in b;
+// run_method3 drops them from the result).
+bool may_remove_surface_vertices(const TetMesh& mesh, const OptimizeOptions& o) {
+  return o.coarsen_surface > 0 && mesh.model.high_order.order != 2 && mesh.model.periodic.empty();
+}
+
 int coarsen_surface(TetMesh& mesh, const OptimizeOptions& o, BoundaryModel& b, double hausdorff,
                     VolumeBudget& budget) {
-  if (!(o.coarsen_surface > 0) || mesh.model.high_order.order == 2 || !mesh.model.periodic.empty())
-    return 0;
+  if (!may_remove_surface_vertices(mesh, o)) return 0;
   BoundaryCollapseOptions co;
   co.short_fraction = o.coarsen_surface;
   co.flat_angle = o.feature_angle;
@@ -538,11 +543,20 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
   // One set of cell buffers for the three CVT phases (Lloyd3Options::cell_buffers), released
   // before the SWAP.
   Lloyd3CellBuffers cells;
+  // The input's surface folds first (a triangle turned over: every tet on it is flat), where
+  // surface vertices may be removed.
+  if (may_remove_surface_vertices(mesh, o)) {
+    FoldRemovalOptions fo;
+    fo.flat_angle = o.feature_angle;
+    fo.hausdorff = tol;
+    fo.volume_budget = &budget;
+    r.nb_boundary_removed = static_cast<int>(remove_surface_folds(mesh, b, fo).nb_removed);
+  }
   run_lloyd3(mesh, o, r, &cells);
   const int lloyd_iterations = r.iterations;
   const bool lloyd_converged = r.converged;
   flip_boundary_edges(mesh, b, bf);
-  r.nb_boundary_removed = coarsen_surface(mesh, o, b, tol, budget);
+  r.nb_boundary_removed += coarsen_surface(mesh, o, b, tol, budget);
   if (o.boundary_lloyd_rounds > 0) {
     BoundaryLloydOptions bl;
     // After a coarsening the constrained CVT keeps lowering its energy round after round (the
