@@ -76,6 +76,15 @@ TEST(Optimize3d, LloydMethodsReportNotConvergedWhenStoppedByTheIterationLimit) {
     const OptimizeResult r = optimize(d, o);
     EXPECT_EQ(r.iterations, 2) << method;
     EXPECT_FALSE(r.converged) << method;
+    // One time per Lloyd iteration (the bench's median column), within the phases' time.
+    ASSERT_EQ(r.lloyd_iteration_seconds.size(), r.lloyd_energy.size()) << method;
+    ASSERT_GE(r.lloyd_iteration_seconds.size(), 2u) << method;
+    double sum = 0;
+    for (double s : r.lloyd_iteration_seconds) {
+      EXPECT_GT(s, 0) << method;
+      sum += s;
+    }
+    EXPECT_LE(sum, r.seconds_lloyd) << method;
   }
 }
 
