@@ -379,32 +379,18 @@ void apply_boundary_collapse(TetMesh& m, BoundaryModel& model, const CollapsePla
 bool is_fold_vertex(const TetMesh& m, const BoundaryModel& model, const BoundaryFans& fans, int v) {
   if (!model.movable(v) || fans.end_of(v) - fans.begin_of(v) != 3) return false;
   const int* f = fans.begin_of(v);
-  // cos of the turn between fan triangles i and j across their common spoke (v, x); 2 if they
-  // have none.
-  auto cos_turn = [&](int i, int j) {
+  // Whether fan triangles i and j turn over across their common spoke (v, x).
+  auto turned_over = [&](int i, int j) {
     const int* t = &m.tris[3 * static_cast<std::size_t>(f[i])];
     const int* u = &m.tris[3 * static_cast<std::size_t>(f[j])];
-    int x = -1;
     for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        if (t[a] != v && t[a] == u[b]) x = t[a];
-    if (x < 0) return 2.0;
-    const Vec3 nt = cross(sub(m.point(t[1]), m.point(t[0])), sub(m.point(t[2]), m.point(t[0])));
-    const Vec3 nu = cross(sub(m.point(u[1]), m.point(u[0])), sub(m.point(u[2]), m.point(u[0])));
-    const double l = norm(nt) * norm(nu);
-    if (!(l > 0)) return 2.0;
-    // Consistently oriented triangles run through (v, x) in opposite directions: cos(turn) is
-    // the dot of their normals (reversed if they run the same way).
-    auto runs_v_to_x = [&](const int* y) {
-      for (int k = 0; k < 3; ++k)
-        if (y[k] == v && y[(k + 1) % 3] == x) return true;
-      return false;
-    };
-    return (runs_v_to_x(t) == runs_v_to_x(u) ? -1 : 1) * dot(nt, nu) / l;
+      if (t[a] != v && (u[0] == t[a] || u[1] == t[a] || u[2] == t[a]))
+        return cos_turn(m, f[i], f[j], v, t[a]) < kFoldFloor;
+    return false;
   };
   // One triangle turned over against both others.
   for (int i = 0; i < 3; ++i)
-    if (cos_turn(i, (i + 1) % 3) < kFoldFloor && cos_turn(i, (i + 2) % 3) < kFoldFloor) return true;
+    if (turned_over(i, (i + 1) % 3) && turned_over(i, (i + 2) % 3)) return true;
   return false;
 }
 

@@ -37,12 +37,16 @@ FoldRemovalStats remove_surface_folds(TetMesh& mesh, BoundaryModel& model,
     const std::vector<double> spacing(static_cast<std::size_t>(mesh.nb_vertices()), 1.0);
     std::vector<char> dirty(spacing.size(), 0);
     long removed = 0;
+    // Whether x's star is as at the pass's start: no vertex of it in a collapse of this pass.
+    auto clean_star = [&](int x) {
+      for (const int* t = star.begin_of(x); t != star.end_of(x); ++t)
+        for (int k = 0; k < 4; ++k)
+          if (dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]]) return false;
+      return true;
+    };
     for (int v : folds) {
       // Not where an earlier collapse of this pass changed the stars or fans (the next pass).
-      bool stale = dirty[v] != 0;
-      for (const int* t = star.begin_of(v); t != star.end_of(v) && !stale; ++t)
-        for (int k = 0; k < 4; ++k) stale |= dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]];
-      if (stale) continue;
+      if (!clean_star(v)) continue;
       std::vector<int> ring;
       for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
         for (int k = 0; k < 3; ++k) {
@@ -50,13 +54,9 @@ FoldRemovalStats remove_surface_folds(TetMesh& mesh, BoundaryModel& model,
           if (x != v && std::find(ring.begin(), ring.end(), x) == ring.end()) ring.push_back(x);
         }
       for (int w : ring) {
-        bool w_stale = false;
-        for (const int* t = star.begin_of(w); t != star.end_of(w) && !w_stale; ++t)
-          for (int k = 0; k < 4; ++k)
-            w_stale |= dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]] != 0;
         CollapsePlan plan;
-        if (w_stale || plan_boundary_collapse(mesh, model, star, fans, spacing, v, w, co, plan) !=
-                           CollapseCheck::kOk)
+        if (!clean_star(w) || plan_boundary_collapse(mesh, model, star, fans, spacing, v, w, co,
+                                                     plan) != CollapseCheck::kOk)
           continue;
         for (const int* t = star.begin_of(v); t != star.end_of(v); ++t)
           for (int k = 0; k < 4; ++k) dirty[mesh.tets[4 * static_cast<std::size_t>(*t) + k]] = 1;

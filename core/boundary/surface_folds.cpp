@@ -54,6 +54,10 @@ int other_triangle(const TetMesh& m, const BoundaryFans& fans, int p, int q, int
 
 }  // namespace
 
+double cos_turn(const TetMesh& m, int f, int g, int p, int q) {
+  return turn(tri(m, f), tri(m, g), p, q, [&](int x) { return m.point(x); });
+}
+
 std::array<int, 6> flipped_triangles(const TetMesh& m, int f1, int a, int b, int c, int d) {
   // f1 turning from b to a: its cycle is (b, a, c), the quad's a -> c -> b -> d -> a.
   return has_directed(tri(m, f1), b, a) ? std::array<int, 6>{a, c, d, b, d, c}

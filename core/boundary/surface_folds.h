@@ -20,6 +20,10 @@ namespace cvtmesh {
 // from 0.3407 to 0.2870, igl_bunny and igl_screwdriver gaining the same either way).
 constexpr double kFoldFloor = -0.9;
 
+// cos of the turn across edge (p, q) between boundary triangles f and g (g's normal reversed if
+// it runs p -> q the same way as f: consistently oriented or not); 0 if one is degenerate.
+double cos_turn(const TetMesh& mesh, int f, int g, int p, int q);
+
 // The two triangles {a, c, d} and {b, d, c} that replace f1 = {a, b, c} and f2 = {a, b, d} when
 // surface edge (a, b) flips to (c, d), as vertex triples turning as the old ones did.
 std::array<int, 6> flipped_triangles(const TetMesh& mesh, int f1, int a, int b, int c, int d);
