@@ -35,6 +35,12 @@ struct BoundaryLloydOptions {
   // flattened against the boundary, and TetGen's rebuild fails on near-degenerate facets).
   double q_guard = 0.1;
   double tri_guard = 0.3;
+  // And the move of a vertex on one of the input's curves (vclass dim 1) may not raise its star's
+  // maximum dihedral angle above max(the maximum before the move, curve_angle_guard) (degrees):
+  // where two curves meet at a small angle (t20's CAD corners, ~12 degrees) the 1D CVT along them
+  // pulled their vertices into the corner and left flat caps there (max dihedral 170.6) whose Q
+  // the q_guard lets through. 180: off.
+  double curve_angle_guard = 165;
   // If set, boundary moves are admitted only within this budget (and charged to it).
   VolumeBudget* volume_budget = nullptr;
   // Cell buffers kept by the caller (null: the call's own), shared with the Lloyd runs around it

@@ -12,4 +12,16 @@ namespace cvtmesh {
 // "" if `after` is not worse than `before`, else what is worse ("Q_min 0.222 -> 0.024").
 std::string worse_than(const QualityStats& after, const QualityStats& before);
 
+// Differences a comparison of two results may ignore: a row within its tolerance of the
+// reference's is not worse. The inverted count is always compared exactly.
+struct RowTolerance {
+  double q_min_relative = 0;  // Q_min: this fraction of the reference's Q_min
+  double q_avg = 0;           // average quality
+  double angle = 0;           // degrees, minimum and maximum angle
+};
+
+// worse_than with each row compared up to `tol`.
+std::string worse_than(const QualityStats& after, const QualityStats& before,
+                       const RowTolerance& tol);
+
 }  // namespace cvtmesh

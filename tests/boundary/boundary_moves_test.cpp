@@ -183,6 +183,33 @@ TEST(BoundaryLloyd, TheCvtEnergyNeverIncreasesWithTheBoundaryFree) {
   EXPECT_LT(s.energy.back(), 0.99 * s.energy.front());
 }
 
+// The curve guard refuses the moves of vertices on the input's curves that would raise their
+// star's maximum dihedral angle (at its strictest, 0 degrees: any rise): on the box's 12 edges
+// some of the 1D CVT's moves do, so it refuses more than the run without it, and its result is
+// as valid.
+TEST(BoundaryLloyd, TheCurveGuardRefusesMovesThatRaiseTheMaximumDihedral) {
+  auto run = [](double guard) {
+    TetMesh m = jittered_box(0.3);
+    const BoundaryModel b = make_discrete_boundary(m);
+    // The edges' vertices on curves of the input's model, as a CAD model's mesh has them.
+    for (int v = 0; v < m.nb_vertices(); ++v)
+      if (nb_on_faces(m.point(v)) == 2) m.vclass[v].dim = 1;
+    const auto sizing = make_uniform_sizing3(1.0);
+    BoundaryLloydOptions o;
+    o.max_rounds = 1;
+    o.tolerance = 0;
+    o.curve_angle_guard = guard;
+    const BoundaryLloydStats st = boundary_lloyd(m, b, *sizing, o);
+    EXPECT_TRUE(check_mesh(m).ok);
+    return st;
+  };
+  const BoundaryLloydStats off = run(180), strict = run(0);
+  ASSERT_EQ(off.rounds, 1);
+  ASSERT_EQ(strict.rounds, 1);
+  EXPECT_GT(strict.nb_refused, off.nb_refused);
+  EXPECT_LT(strict.nb_moved, off.nb_moved);
+}
+
 // The pipeline skips its second Lloyd run when the constrained CVT reports the interior
 // converged (interior_D below the tolerance): that D is the one the Lloyd iteration's first
 // step reports on the returned mesh under the same sizing field.

@@ -26,5 +26,24 @@ TEST(WorseThan, EachMeasureAloneMakesAMeshWorseAndEqualIsNot) {
   EXPECT_EQ(worse_than(flat, in), "1 inverted or flat elements");
 }
 
+// Within its tolerance a row is not worse; past it, it is (and the message names it); inverted
+// elements are never tolerated.
+TEST(WorseThan, ARowWithinItsToleranceIsNotWorse) {
+  const QualityStats in = stats(0.2, 0.70, 10, 160);
+  RowTolerance tol;
+  tol.q_min_relative = 0.01, tol.q_avg = 0.001, tol.angle = 0.1;
+  EXPECT_EQ(worse_than(stats(0.1985, 0.6995, 9.95, 160.05), in, tol), "");
+  EXPECT_EQ(worse_than(stats(0.1975, 0.70, 10, 160), in, tol), "Q_min 0.2000 -> 0.1975");
+  EXPECT_EQ(worse_than(stats(0.2, 0.6985, 10, 160), in, tol), "average Q 0.7000 -> 0.6985");
+  EXPECT_EQ(worse_than(stats(0.2, 0.70, 9.85, 160), in, tol), "min dihedral 10.00 -> 9.85 degrees");
+  EXPECT_EQ(worse_than(stats(0.2, 0.70, 10, 160.15), in, tol),
+            "max dihedral 160.00 -> 160.15 degrees");
+  QualityStats flat = in;
+  flat.nb_inverted = 1;
+  EXPECT_EQ(worse_than(flat, in, tol), "1 inverted or flat elements");
+  // The default tolerance is none: the exact comparison.
+  EXPECT_EQ(worse_than(stats(0.1999, 0.70, 10, 160), in, RowTolerance{}), "Q_min 0.2000 -> 0.1999");
+}
+
 }  // namespace
 }  // namespace cvtmesh
