@@ -207,9 +207,14 @@ void register_optimize(CLI::App& app) {
                         r.nb_fixed_vertices, r.nb_boundary_moved, r.hausdorff,
                         r.hausdorff / r.diagonal, r.hausdorff_tolerance, 100 * r.volume_change,
                         r.tri_q_min_before, r.tri_q_min_after);
-         if (!quiet && r.boundary_free && r.nb_boundary_removed > 0)
-           std::fprintf(stderr, "surface coarsening: %d surface vertices removed\n",
-                        r.nb_boundary_removed);
+         if (!quiet && r.boundary_free && r.nb_boundary_removed > 0) {
+           const std::string folds = r.nb_folds_removed > 0
+                                         ? " (" + std::to_string(r.nb_folds_removed) +
+                                               " of them the input's surface folds)"
+                                         : "";
+           std::fprintf(stderr, "surface coarsening: %d surface vertices removed%s\n",
+                        r.nb_boundary_removed, folds.c_str());
+         }
          for (const auto& note : r.notes) info() << "cvtmesh: note: " << note << "\n";
          const bool capped = !r.converged && !r.kept_input;
          if (capped)

@@ -212,6 +212,7 @@ std::string GmshOptimizeResult::to_json() const {
                           {"fixed_vertices", result.nb_fixed_vertices},
                           {"moved", result.nb_boundary_moved},
                           {"removed", result.nb_boundary_removed},
+                          {"folds_removed", result.nb_folds_removed},
                           {"hausdorff", result.hausdorff},
                           {"hausdorff_bound", result.hausdorff_tolerance},
                           {"volume_change", result.volume_change},

@@ -550,7 +550,8 @@ void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, Boundar
     fo.flat_angle = o.feature_angle;
     fo.hausdorff = tol;
     fo.volume_budget = &budget;
-    r.nb_boundary_removed = static_cast<int>(remove_surface_folds(mesh, b, fo).nb_removed);
+    r.nb_folds_removed = static_cast<int>(remove_surface_folds(mesh, b, fo).nb_removed);
+    r.nb_boundary_removed = r.nb_folds_removed;
   }
   run_lloyd3(mesh, o, r, &cells);
   const int lloyd_iterations = r.iterations;
@@ -1129,6 +1130,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
       r.converged = v.result.converged;
       r.boundary_free = false;
       r.nb_boundary_removed = 0;
+      r.nb_folds_removed = 0;
     } else if (!v.error.empty()) {
       failure = "'" + method + "' with the boundary fixed failed (" + v.error + ")";
     } else {

@@ -200,6 +200,7 @@ struct OptimizeResult {
   bool boundary_free = false;
   int nb_boundary_moved = 0;    // boundary vertices that moved
   int nb_boundary_removed = 0;  // surface vertices removed (coarsen_surface, remove_surface_folds)
+  int nb_folds_removed = 0;     // of which the input's surface folds (remove_surface_folds)
   // Roles of the boundary vertices: on a surface patch, on a curve, fixed (corners, locked).
   int nb_surface_vertices = 0, nb_curve_vertices = 0, nb_fixed_vertices = 0;
   double hausdorff = 0;            // two-sided Hausdorff distance new vs input boundary

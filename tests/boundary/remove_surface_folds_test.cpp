@@ -18,6 +18,8 @@
 #include "core/boundary/surface_folds.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/mesh_data.h"
+#include "core/pipeline/optimize.h"
 #include "tests/support/test_meshes.h"
 
 namespace cvtmesh {
@@ -79,6 +81,22 @@ TEST(RemoveSurfaceFolds, TheFoldVertexGoesAndTheSurfaceIsNoLongerTurnedOver) {
   EXPECT_EQ(b.role_of(kP).role, BoundaryRole::kFixed);
   for (const auto& e : b.curve_edges) EXPECT_TRUE(e[0] != kP && e[1] != kP);
   EXPECT_LT(sharpest_turn(m), 150);
+}
+
+// Through optimize(): the default run removes the fold and says so (the CLI's "N of them the
+// input's surface folds", the scripting result's free_boundary["folds_removed"]).
+TEST(RemoveSurfaceFolds, OptimizeCountsTheFoldItRemoved) {
+  MeshData d;
+  d.dim = 3;
+  d.tet = folded();
+  OptimizeOptions o;
+  o.hausdorff = 0.02;
+  const OptimizeResult r = optimize(d, o);
+  ASSERT_TRUE(r.boundary_free);
+  EXPECT_EQ(r.nb_folds_removed, 1);
+  EXPECT_GE(r.nb_boundary_removed, r.nb_folds_removed);
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+  EXPECT_EQ(d.tet.nb_tets(), 1);
 }
 
 TEST(RemoveSurfaceFolds, NoFoldNoRemovalAndTheHausdorffBoundHolds) {

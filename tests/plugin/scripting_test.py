@@ -301,6 +301,7 @@ class CadBoundary(unittest.TestCase):
         after = nodes(2)
         self.assertLessEqual(set(after), set(before))
         self.assertEqual(len(before) - len(after), fb["removed"])
+        self.assertTrue(0 <= fb["folds_removed"] <= fb["removed"])
         for tag, (x, y, z) in after.items():
             r = ((x - 0.1) ** 2 + (y - 0.2) ** 2 + (z - 0.3) ** 2) ** 0.5
             self.assertLessEqual(abs(r - 1), 1e-12, tag)
