@@ -943,15 +943,10 @@ void adopt_variant(Variant& v, const std::string& method, const std::string& not
 // The quality targets (the issues' figures at every size) below which auto_refine tries more.
 constexpr double kTargetAverage = 0.85, kTargetQmin = 0.40;
 
-// Rows closer than this are the same to auto_refine's comparison of two results (differences
-// below what the tables show or matter: the femur's 1.5 run, Q_min 0.3865 -> 0.5103, was refused
-// for a min dihedral 30.03 -> 30.03 degrees lower in its third decimal).
-constexpr RowTolerance kRefineTolerance{0.01, 0.001, 0.1};
-
 // The automatic interior refinement (OptimizeOptions::auto_refine): on a coarse model whose
 // result misses the targets, the run again with TetGen's interior refinement before Lloyd (the
 // bound 1.5, then 1.2: the Init's too few interior vertices), each result no worse on any
-// quality row than the one in hand (up to kRefineTolerance) and better on Q_min or the average
+// quality row than the one in hand (up to kAutoRefineTolerance) and better on Q_min or the average
 // (past it) kept (the 1.2 one judged against the 1.5 one's when that was kept), while the one in
 // hand misses the targets. The input's rows are kept exactly (`ref`, inside the run).
 // `t0`: when optimize() started; o.time_budget bounds the whole (a refined run is not started
@@ -987,7 +982,7 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
     }
     OptimizeOptions ro = kept;
     ro.refine_interior = bound;
-    const RowTolerance& tol = kRefineTolerance;
+    const RowTolerance& tol = kAutoRefineTolerance;
     Variant v = try_variant(input, method, ro, now, ref, tol);
     // Within the tolerance of the result in hand, but never below the input on any row.
     if (v.kept() && ref && !(v.worse = worse_than(v.stats, *ref)).empty())
