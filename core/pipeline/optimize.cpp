@@ -985,8 +985,10 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
     const RowTolerance& tol = kAutoRefineTolerance;
     Variant v = try_variant(input, method, ro, now, ref, tol);
     // Within the tolerance of the result in hand, but never below the input on any row.
-    if (v.kept() && ref && !(v.worse = worse_than(v.stats, *ref)).empty())
-      v.worse = "worse than the input: " + v.worse;
+    if (v.kept() && ref) {
+      const std::string worse = worse_than(v.stats, *ref);
+      if (!worse.empty()) v.worse = "worse than the input: " + worse;
+    }
     if (!v.error.empty()) {
       decide(std::string(what) + " did not finish (" + v.error + ")");
       continue;

@@ -149,9 +149,8 @@ struct OptimizeOptions {
   // auto_refine_max_tets tets) whose result misses the quality targets (average Q 0.85, Q_min
   // 0.40): the run is repeated with refine_interior 1.5, then (while the targets are missed)
   // 1.2, and each result no worse on any quality row than the one in hand (Q_min, min and max
-  // dihedral angle, average Q, up to kAutoRefineTolerance), never
-  // worse than the input and better on Q_min or the average is kept (the notes say which; the
-  // element count grows).
+  // dihedral angle, average Q, up to kAutoRefineTolerance), never worse than the input and
+  // better on Q_min or the average is kept (the notes say which; the element count grows).
   bool auto_refine = true;
   int auto_refine_max_tets = 200000;
   // Wall-clock seconds the caller allows optimize() (0 = no bound; the CLI sets it from

@@ -4,10 +4,6 @@
 
 namespace cvtmesh {
 
-std::string worse_than(const QualityStats& a, const QualityStats& b) {
-  return worse_than(a, b, RowTolerance{});
-}
-
 std::string worse_than(const QualityStats& a, const QualityStats& b, const RowTolerance& tol) {
   char buf[160];
   const char* angle = a.dim == 3 ? "dihedral" : "angle";

@@ -9,9 +9,6 @@
 
 namespace cvtmesh {
 
-// "" if `after` is not worse than `before`, else what is worse ("Q_min 0.222 -> 0.024").
-std::string worse_than(const QualityStats& after, const QualityStats& before);
-
 // Differences a comparison of two results may ignore: a row within its tolerance of the
 // reference's is not worse. The inverted count is always compared exactly.
 struct RowTolerance {
@@ -20,8 +17,9 @@ struct RowTolerance {
   double angle = 0;           // degrees, minimum and maximum angle
 };
 
-// worse_than with each row compared up to `tol`.
+// "" if `after` is not worse than `before` (each row up to `tol`; by default exactly), else what
+// is worse ("Q_min 0.222 -> 0.024").
 std::string worse_than(const QualityStats& after, const QualityStats& before,
-                       const RowTolerance& tol);
+                       const RowTolerance& tol = {});
 
 }  // namespace cvtmesh
