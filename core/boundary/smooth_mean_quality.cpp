@@ -37,9 +37,16 @@ double angle_of(const TetMesh& m, int t) {
                      Measure::kMinAngle);
 }
 
-// Whether every dihedral angle of tet t is above the angle whose cosine is cos_low (the cosines
-// compared: no acos), with the faces' normals as tet_dihedral_angles takes them.
-bool angles_above(const TetMesh& m, int t, double cos_low) {
+double max_angle_of(const TetMesh& m, int t) {
+  const int* v = tet_of(m, t);
+  return tet_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]),
+                     Measure::kMaxAngle);
+}
+
+// Whether every dihedral angle of tet t is above the angle whose cosine is cos_low and below the
+// one whose cosine is cos_high (the cosines compared: no acos), with the faces' normals as
+// tet_dihedral_angles takes them.
+bool angles_within(const TetMesh& m, int t, double cos_low, double cos_high) {
   const int* v = tet_of(m, t);
   const double* p[4] = {m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])};
   static const int F[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -54,7 +61,8 @@ bool angles_above(const TetMesh& m, int t, double cos_low) {
   // normals: its cosine is -n_k.n_l / (|n_k| |n_l|).
   for (int k = 0; k < 4; ++k)
     for (int j = k + 1; j < 4; ++j)
-      if (-dot(n[k], n[j]) > cos_low * l[k] * l[j]) return false;
+      if (-dot(n[k], n[j]) > cos_low * l[k] * l[j] || -dot(n[k], n[j]) < cos_high * l[k] * l[j])
+        return false;
   return true;
 }
 
@@ -102,7 +110,7 @@ struct MeanMover {
   const VertexTets& star;
   const BoundaryFans& fans;
   const VertexTimeSteps& dt_steps;
-  double q_floor, angle_floor, tri_floor;
+  double q_floor, angle_floor, tri_floor, angle_ceiling;
 };
 
 struct MeanScratch {
@@ -141,7 +149,11 @@ MeanMove try_mean_move(const MeanMover& m, int v, MeanScratch& s) {
     star_q = std::min(star_q, q);
   }
   if (!(cur < (interior ? o.star_below : o.boundary_star_below) * n)) return r;
-  for (const int* t = b; t != e; ++t) star_a = std::min(star_a, angle_of(mesh, *t));
+  double star_max = 0;
+  for (const int* t = b; t != e; ++t) {
+    star_a = std::min(star_a, angle_of(mesh, *t));
+    star_max = std::max(star_max, max_angle_of(mesh, *t));
+  }
   if (!interior)
     for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
       fan_q = std::min(fan_q, tri_q_of(mesh, *f));
@@ -149,6 +161,9 @@ MeanMove try_mean_move(const MeanMover& m, int v, MeanScratch& s) {
                t_low = std::min(fan_q, m.tri_floor);
   // Strictly above a_low (a margin over acos's rounding): the guard in cosines.
   const double cos_low = std::cos(a_low * kPi / 180) - 1e-12;
+  // Not above max(the star's maximum dihedral angle before, the ceiling), likewise.
+  const double a_high = std::max(star_max, m.angle_ceiling);
+  const double cos_high = a_high >= 180 ? -2.0 : std::cos(a_high * kPi / 180) - 1e-12;
   r.tried = true;
   double* P = mesh.point(v);
   const Vec3 start = vec3(P);
@@ -164,7 +179,7 @@ MeanMove try_mean_move(const MeanMover& m, int v, MeanScratch& s) {
       sum += q;
     }
     for (const int* t = b; t != e; ++t)
-      if (!angles_above(mesh, *t, cos_low)) return false;
+      if (!angles_within(mesh, *t, cos_low, cos_high)) return false;
     if (!interior)
       for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
         if (tri_q_of(mesh, *f) < t_low) return false;
@@ -301,13 +316,16 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
   MeanQualityStats stats;
   const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
   const bool boundary = o.boundary && model.geometry;
-  // The floors, raised to the mesh's minima at the start (as smooth_maxmin3's): so no move takes
-  // a value from above the mesh's minimum to below it, and the minima never fall.
-  double q_floor = o.q_floor, angle_floor = o.angle_floor, tri_floor = o.tri_floor;
+  // The floors, raised to the mesh's minima at the start (as smooth_maxmin3's), and the ceiling,
+  // lowered to its maximum dihedral angle: so no move takes a value from above the mesh's minimum
+  // to below it (from below its maximum to above it), and the minima never fall (nor the maximum
+  // dihedral angle rise).
+  double q_floor = o.q_floor, angle_floor = o.angle_floor, tri_floor = o.tri_floor,
+         angle_ceiling = o.angle_ceiling;
   {
-    double sum = 0, q_min = kInf, a_min = kInf, t_min = kInf;
+    double sum = 0, q_min = kInf, a_min = kInf, t_min = kInf, a_max = 0;
     long live = 0;
-#pragma omp parallel for schedule(static, 4096) reduction(+ : sum, live) reduction(min : q_min, a_min) if (nt > 4096)
+#pragma omp parallel for schedule(static, 4096) reduction(+ : sum, live) reduction(min : q_min, a_min) reduction(max : a_max) if (nt > 4096)
     for (int t = 0; t < nt; ++t)
       if (tet_of(mesh, t)[0] >= 0) {
         const double q = q_of(mesh, t);
@@ -315,6 +333,7 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
         sum += q;
         q_min = std::min(q_min, q);
         a_min = std::min(a_min, angle_of(mesh, t));
+        a_max = std::max(a_max, max_angle_of(mesh, t));
       }
     if (boundary)
       for (int f = 0; f < mesh.nb_tris(); ++f) t_min = std::min(t_min, tri_q_of(mesh, f));
@@ -323,12 +342,14 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
     q_floor = std::max(q_floor, q_min);
     angle_floor = std::max(angle_floor, a_min);
     if (t_min < kInf) tri_floor = std::max(tri_floor, t_min);
+    if (live > 0 && angle_ceiling < 180) angle_ceiling = std::min(angle_ceiling, a_max);
   }
   const VertexTets star = vertex_tets(mesh);
   const BoundaryFans fans = boundary_fans(mesh);
   VertexTimeSteps dt_steps;
   if (o.dt_guard.on) dt_steps = vertex_time_steps(mesh);
-  const MeanMover mover{mesh, model, o, star, fans, dt_steps, q_floor, angle_floor, tri_floor};
+  const MeanMover mover{mesh,     model,   o,           star,      fans,
+                        dt_steps, q_floor, angle_floor, tri_floor, angle_ceiling};
   // The interior vertices move colour by colour (no two of a colour share a tet: each reads its
   // star, of other colours, and writes its own point), in parallel; the surface and curve
   // vertices then one by one in vertex order (they share the volume budget). The result does not

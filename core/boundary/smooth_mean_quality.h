@@ -11,9 +11,12 @@
 //  - the guards hold: no tet of the star falls below min(the star's minimum Q before the move,
 //    the Q floor), nor below min(the star's minimum dihedral angle before, the angle floor), no
 //    boundary triangle of the fan below min(the fan's minimum Q before, the triangle floor), each
-//    floor being max(q_floor / angle_floor / tri_floor, the mesh's minimum at the start); the
-//    time-step guard (time_step_guard.h), when on, as the polish's moves have it. So the global
-//    minima of Q, of the dihedral angle and of the boundary triangles' Q never decrease;
+//    floor being max(q_floor / angle_floor / tri_floor, the mesh's minimum at the start); no tet
+//    rises above max(the star's maximum dihedral angle before, the ceiling), the ceiling being
+//    min(angle_ceiling, the mesh's maximum at the start) (none from 180 on); the time-step guard
+//    (time_step_guard.h), when on, as the polish's moves have it. So the global minima of Q, of
+//    the dihedral angle and of the boundary triangles' Q never decrease, nor does the maximum
+//    dihedral angle rise;
 //  - for a boundary vertex, its fan stays within the Hausdorff tolerance (fan_within_tolerance)
 //    and the move's volume change within the volume budget (charged to it).
 // Connectivity never changes. Each pass moves the interior vertices colour by colour (no two of
@@ -40,8 +43,10 @@ struct MeanQualityOptions {
   double star_below = 0.95;
   double boundary_star_below = 0.95;
   double q_floor = 0.5, angle_floor = 30, tri_floor = 0.6;  // the guards (see above)
-  bool interior = true;                                     // move the interior vertices
-  bool boundary = true;                                     // move the surface and curve vertices
+  // Degrees: the maximum dihedral angle's guard (see above); 180 or more: none.
+  double angle_ceiling = 150;
+  bool interior = true;  // move the interior vertices
+  bool boundary = true;  // move the surface and curve vertices
   double hausdorff = std::numeric_limits<double>::infinity();  // absolute
   VolumeBudget* volume_budget = nullptr;  // if set, boundary moves stay within it (charged to it)
   TimeStepGuard dt_guard;                 // off by default

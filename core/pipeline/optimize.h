@@ -148,9 +148,11 @@ struct OptimizeOptions {
   // With refine_interior = 0 and the default method on a coarse model (at most
   // auto_refine_max_tets tets) whose result misses the quality targets (average Q 0.85, Q_min
   // 0.40): the run is repeated with refine_interior 1.5, then (while the targets are missed)
-  // 1.2, and each result no worse on any quality row than the one in hand (Q_min, min and max
-  // dihedral angle, average Q, up to kAutoRefineTolerance), never worse than the input and
-  // better on Q_min or the average is kept (the notes say which; the element count grows).
+  // 1.2; a result no worse on any quality row than the plain run's (Q_min, min and max dihedral
+  // angle, average Q, up to kAutoRefineTolerance) or better on balance (better_on_balance: both Q
+  // rows better, a little of an angle row given up), better on Q_min or the average and never
+  // worse than the input is kept, of two such the one with the higher average (the notes say
+  // which; the element count grows).
   bool auto_refine = true;
   int auto_refine_max_tets = 200000;
   // Wall-clock seconds the caller allows optimize() (0 = no bound; the CLI sets it from

@@ -239,9 +239,10 @@ std::vector<OptionSpec> make_schema() {
                            "default method, no --refine-interior: on a coarse model whose result "
                            "misses average Q 0.85 or Q_min 0.40, the run with the interior "
                            "refined (bound 1.5, then 1.2) is kept where it is no worse on every "
-                           "quality row (up to 1 % of Q_min, 0.001 of the average, 0.1 degrees; "
-                           "never worse than the input) and better (more elements; the flag "
-                           "turns it off)",
+                           "quality row (up to 1 % of Q_min, 0.001 of the average, 0.1 degrees) "
+                           "or better on both Q rows for a little of an angle row, never worse "
+                           "than the input, and better (the higher average of two; more "
+                           "elements; the flag turns it off)",
                            kDim3);
     s.fronts = kAllFronts;
     s.panel = "4Refine a coarse interior";

@@ -30,4 +30,14 @@ std::string worse_than(const QualityStats& a, const QualityStats& b, const RowTo
   return "";
 }
 
+bool better_on_balance(const QualityStats& a, const QualityStats& b, const RowTolerance& tol) {
+  if (!(tol.q_min_relative > 0 && tol.q_avg > 0 && tol.angle > 0) || !(b.q_min > 0)) return false;
+  if (a.nb_inverted > b.nb_inverted) return false;
+  const double q_min = (a.q_min - b.q_min) / (tol.q_min_relative * b.q_min);
+  const double q_avg = (a.q_avg - b.q_avg) / tol.q_avg;
+  const double min_angle = (a.min_angle - b.min_angle) / tol.angle;
+  const double max_angle = (b.max_angle - a.max_angle) / tol.angle;
+  return q_min > 1 && q_avg > 1 && q_min + q_avg + min_angle + max_angle > 0;
+}
+
 }  // namespace cvtmesh

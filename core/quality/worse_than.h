@@ -22,4 +22,12 @@ struct RowTolerance {
 std::string worse_than(const QualityStats& after, const QualityStats& before,
                        const RowTolerance& tol = {});
 
+// Whether `after` is better than `before` on balance: past `tol` on both Q rows (Q_min and the
+// average), no more inverted or flat elements, and with each row's difference counted in units
+// of its tolerance (Q_min relative to before's, the average, the minimum and the maximum angle;
+// a gain positive) a gain in sum. A result that gives up a little of an angle row for much on
+// both Q rows (auto_refine). False unless every tolerance is positive.
+bool better_on_balance(const QualityStats& after, const QualityStats& before,
+                       const RowTolerance& tol);
+
 }  // namespace cvtmesh

@@ -55,7 +55,7 @@ TetMesh jittered_box(double amount) {
 }
 
 struct Figures {
-  double sum = 0, q_min = 1e300, angle_min = 1e300, tri_min = 1e300;
+  double sum = 0, q_min = 1e300, angle_min = 1e300, tri_min = 1e300, angle_max = 0;
 };
 
 Figures figures(const TetMesh& m) {
@@ -68,6 +68,7 @@ Figures figures(const TetMesh& m) {
     f.sum += q;
     f.q_min = std::min(f.q_min, q);
     f.angle_min = std::min(f.angle_min, tet_quality(a, b, c, d, Measure::kMinAngle));
+    f.angle_max = std::max(f.angle_max, tet_quality(a, b, c, d, Measure::kMaxAngle));
   }
   for (int k = 0; k < m.nb_tris(); ++k) {
     const int* v = &m.tris[3 * k];
@@ -140,6 +141,30 @@ TEST(SmoothMeanQuality, TheSumRisesTheMinimaNeverFallAndFacesStayFlat) {
   FreeBoundaryTolerances ft;
   ft.hausdorff = 1e-9;
   EXPECT_LE(verify_free_boundary(start, m, b, ft).hausdorff.value(), 1e-9);
+}
+
+// The ceiling (stop 39): with it the maximum dihedral angle never rises while the sum does;
+// without it (180) the same passes raise it (the box smoothed once, then the passes with the
+// floors at 0, which leave the moves freer), so the guard is what holds it.
+TEST(SmoothMeanQuality, TheMaximumDihedralAngleNeverRisesUnderTheCeiling) {
+  TetMesh start = jittered_box(0.3);
+  const BoundaryModel b = make_discrete_boundary(start);
+  MeanQualityOptions o;
+  o.star_below = 1;
+  smooth_mean_quality(start, b, o);
+  const Figures before = figures(start);
+  o.q_floor = o.angle_floor = o.tri_floor = 0;
+  o.passes = 10;
+  o.max_steps = 10;
+  TetMesh guarded = start, free = start;
+  smooth_mean_quality(guarded, b, o);
+  o.angle_ceiling = 180;
+  smooth_mean_quality(free, b, o);
+  ASSERT_TRUE(check_mesh(guarded).ok);
+  const Figures g = figures(guarded), f = figures(free);
+  EXPECT_GT(g.sum, before.sum);
+  EXPECT_LE(g.angle_max, before.angle_max);
+  EXPECT_GT(f.angle_max, before.angle_max) << "the box no longer shows the guard: pick another";
 }
 
 TEST(SmoothMeanQuality, InteriorOnlyLeavesTheBoundaryAndAGoodMeshIsLeftAlone) {

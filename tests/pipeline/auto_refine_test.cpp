@@ -1,6 +1,7 @@
 // The automatic interior refinement (OptimizeOptions::auto_refine): on a coarse model short of
 // the quality targets the run with the interior refined is kept only where it is no worse on any
-// quality row than the run without (up to kAutoRefineTolerance; never worse than the input);
+// quality row than the run without (up to kAutoRefineTolerance) or better on balance, and never
+// worse than the input;
 // above auto_refine_max_tets, or with it off, the result is the plain run's.
 #include <gtest/gtest.h>
 
@@ -32,15 +33,14 @@ TEST(AutoRefine, KeepsTheRefinedRunOnlyWhereNoQualityRowIsWorse) {
   ASSERT_LT(a.after.q_avg, 0.85) << "the model no longer misses the target: pick another";
   const OptimizeResult b = optimize(automatic, OptimizeOptions{});
   ASSERT_TRUE(check_mesh(automatic.tet).ok);
-  // Tried at least once; what is kept is never worse than the input on any row, nor worse than
-  // the plain run beyond the comparison's tolerance (twice it: each kept run is judged against
-  // the one in hand) and, kept once, better than it past the tolerance on Q_min or the average.
+  // Tried at least once; what is kept is never worse than the input on any row, and against the
+  // plain run (each refined run is judged against it) no worse beyond the comparison's tolerance
+  // or better on balance, and better past the tolerance on Q_min or the average.
   EXPECT_GE(count_notes(b, "the run with the interior refined"), 1);
   EXPECT_EQ(worse_than(b.after, b.before), "");
-  RowTolerance twice = kAutoRefineTolerance;
-  twice.q_min_relative *= 2, twice.q_avg *= 2, twice.angle *= 2;
-  EXPECT_EQ(worse_than(b.after, a.after, twice), "");
-  if (count_notes(b, "is kept:") == 1) {
+  EXPECT_TRUE(worse_than(b.after, a.after, kAutoRefineTolerance).empty() ||
+              better_on_balance(b.after, a.after, kAutoRefineTolerance));
+  if (count_notes(b, "is kept:") >= 1) {
     EXPECT_TRUE(b.after.q_min > a.after.q_min * (1 + kAutoRefineTolerance.q_min_relative) ||
                 b.after.q_avg > a.after.q_avg + kAutoRefineTolerance.q_avg);
   } else {

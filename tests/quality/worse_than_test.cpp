@@ -45,5 +45,27 @@ TEST(WorseThan, ARowWithinItsToleranceIsNotWorse) {
   EXPECT_EQ(worse_than(stats(0.1999, 0.70, 10, 160), in, RowTolerance{}), "Q_min 0.2000 -> 0.1999");
 }
 
+// On balance (auto_refine): past the tolerance on both Q rows and a gain in sum, each row counted
+// in units of its tolerance; igl_3holes' refined run (stop 39) is one.
+TEST(WorseThan, BetterOnBalanceTradesALittleOfAnAngleRowForMuchOnBothQRows) {
+  RowTolerance tol;
+  tol.q_min_relative = 0.01, tol.q_avg = 0.001, tol.angle = 0.1;
+  const QualityStats plain = stats(0.3967, 0.8536, 20.36, 133.22);
+  const QualityStats refined = stats(0.4398, 0.8627, 23.58, 136.74);
+  EXPECT_NE(worse_than(refined, plain, tol), "");
+  EXPECT_TRUE(better_on_balance(refined, plain, tol));
+  // Gmsh t20's 1.5 run: both Q rows a little better, the maximum angle 2.6 degrees worse.
+  EXPECT_FALSE(better_on_balance(stats(0.0535, 0.7391, 3.19, 166.30),
+                                 stats(0.0521, 0.7367, 3.07, 163.67), tol));
+  // One Q row not better past its tolerance: never, whatever the angles gain.
+  EXPECT_FALSE(better_on_balance(stats(0.3967, 0.90, 30, 120), plain, tol));
+  EXPECT_FALSE(better_on_balance(stats(0.45, 0.8536, 30, 120), plain, tol));
+  // More inverted elements, or no tolerance: never.
+  QualityStats flat = refined;
+  flat.nb_inverted = 1;
+  EXPECT_FALSE(better_on_balance(flat, plain, tol));
+  EXPECT_FALSE(better_on_balance(refined, plain, RowTolerance{}));
+}
+
 }  // namespace
 }  // namespace cvtmesh
