@@ -1,8 +1,10 @@
 #include "core/boundary/smooth_mean_quality.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/boundary/boundary_fans.h"
@@ -31,16 +33,13 @@ double q_of(const TetMesh& m, int t) {
   return tet_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]), Measure::kQ);
 }
 
-double angle_of(const TetMesh& m, int t) {
+// The minimum and maximum dihedral angle of tet t (degrees), from one evaluation of its angles
+// (tet_table_qualities: bitwise tet_quality's kMinAngle and kMaxAngle).
+std::pair<double, double> angles_of(const TetMesh& m, int t) {
   const int* v = tet_of(m, t);
-  return tet_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]),
-                     Measure::kMinAngle);
-}
-
-double max_angle_of(const TetMesh& m, int t) {
-  const int* v = tet_of(m, t);
-  return tet_quality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]),
-                     Measure::kMaxAngle);
+  const std::array<double, 4> a =
+      tet_table_qualities(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+  return {a[2], a[3]};
 }
 
 // Whether every dihedral angle of tet t is above the angle whose cosine is cos_low and below the
@@ -151,8 +150,9 @@ MeanMove try_mean_move(const MeanMover& m, int v, MeanScratch& s) {
   if (!(cur < (interior ? o.star_below : o.boundary_star_below) * n)) return r;
   double star_max = 0;
   for (const int* t = b; t != e; ++t) {
-    star_a = std::min(star_a, angle_of(mesh, *t));
-    star_max = std::max(star_max, max_angle_of(mesh, *t));
+    const auto [lo, hi] = angles_of(mesh, *t);
+    star_a = std::min(star_a, lo);
+    star_max = std::max(star_max, hi);
   }
   if (!interior)
     for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
@@ -332,8 +332,9 @@ MeanQualityStats smooth_mean_quality(TetMesh& mesh, const BoundaryModel& model,
         ++live;
         sum += q;
         q_min = std::min(q_min, q);
-        a_min = std::min(a_min, angle_of(mesh, t));
-        a_max = std::max(a_max, max_angle_of(mesh, t));
+        const auto [lo, hi] = angles_of(mesh, t);
+        a_min = std::min(a_min, lo);
+        a_max = std::max(a_max, hi);
       }
     if (boundary)
       for (int f = 0; f < mesh.nb_tris(); ++f) t_min = std::min(t_min, tri_q_of(mesh, f));
