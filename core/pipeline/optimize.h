@@ -152,7 +152,8 @@ struct OptimizeOptions {
   // angle, average Q, up to kAutoRefineTolerance) or better on balance (better_on_balance: both Q
   // rows better, a little of an angle row given up), better on Q_min or the average and never
   // worse than the input is kept, of two such the one with the higher average (the notes say
-  // which; the element count grows).
+  // which; the element count grows); after a kept 1.2 run, a 1.1 run judged the same way against
+  // that run instead of the plain one.
   bool auto_refine = true;
   int auto_refine_max_tets = 200000;
   // Wall-clock seconds the caller allows optimize() (0 = no bound; the CLI sets it from

@@ -242,7 +242,8 @@ std::vector<OptionSpec> make_schema() {
                            "quality row (up to 1 % of Q_min, 0.001 of the average, 0.1 degrees) "
                            "or better on both Q rows for a little of an angle row, never worse "
                            "than the input, and better (the higher average of two; more "
-                           "elements; the flag turns it off)",
+                           "elements; after a kept 1.2 run, a 1.1 run judged the same way "
+                           "against it; the flag turns it off)",
                            kDim3);
     s.fronts = kAllFronts;
     s.panel = "4Refine a coarse interior";

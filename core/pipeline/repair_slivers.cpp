@@ -12,7 +12,9 @@
 #include "core/mesh/build_adjacency.h"
 #include "core/swap/local_mesh.h"
 #include "core/mesh/walk_vertex_star.h"
+#include "core/quality/element_time_step.h"
 #include "core/quality/quality.h"
+#include "core/quality/time_step_guard.h"
 #include "core/swap/apply_swap.h"
 #include "core/swap/compact_tets.h"
 #include "core/swap/constrained_faces.h"
@@ -22,6 +24,7 @@
 #include "core/swap/plan_adds_existing_simplex.h"
 #include "core/swap/remove_edge.h"
 #include "core/swap/swap_slivers.h"
+#include "core/smoothing/nelder_mead_vertex.h"
 
 namespace cvtmesh {
 namespace {
@@ -35,13 +38,16 @@ const int* tet_of(const TetMesh& m, int t) {
 
 struct Score {
   double objective = kInf, q = kInf, angle = kInf;
+  double max_angle = -kInf;  // the largest dihedral angle (degrees)
+  double dt = kInf;          // the smallest element time step (changed_scores with a guard only)
 };
 
 Score tet_score_of(const double* const x[4]) {
-  const double *a = x[0], *b = x[1], *c = x[2], *d = x[3];
+  const std::array<double, 4> t = tet_table_qualities(x[0], x[1], x[2], x[3]);
   Score s;
-  s.q = tet_quality(a, b, c, d, Measure::kQ);
-  s.angle = tet_quality(a, b, c, d, Measure::kMinAngle);
+  s.q = t[0];
+  s.angle = t[2];
+  s.max_angle = t[3];
   s.objective = std::min(s.q, s.angle / kAngleScale);
   return s;
 }
@@ -55,6 +61,8 @@ void lower(Score& s, const Score& t) {
   s.objective = std::min(s.objective, t.objective);
   s.q = std::min(s.q, t.q);
   s.angle = std::min(s.angle, t.angle);
+  s.max_angle = std::max(s.max_angle, t.max_angle);
+  s.dt = std::min(s.dt, t.dt);
 }
 
 // The minima over the live tets of m.
@@ -107,7 +115,7 @@ Quad sorted_quad(const int* v) {
 // The minima over the tets that differ between the copy `before` and a candidate `after` (same
 // vertex ids, maybe new ones appended): the tets of one that are not tets of the other, and the
 // tets holding a vertex that moved. Everything else is the same in both.
-std::pair<Score, Score> changed_scores(const TetMesh& before, const TetMesh& after) {
+std::pair<Score, Score> changed_scores(const TetMesh& before, const TetMesh& after, bool with_dt) {
   const int n0 = before.nb_vertices();
   std::vector<char> moved(static_cast<std::size_t>(after.nb_vertices()), 1);
   for (int v = 0; v < n0; ++v)
@@ -126,8 +134,12 @@ std::pair<Score, Score> changed_scores(const TetMesh& before, const TetMesh& aft
       const int* tv = tet_of(m, t);
       if (tv[0] < 0) continue;
       if (moved[tv[0]] || moved[tv[1]] || moved[tv[2]] || moved[tv[3]] ||
-          !std::binary_search(other.begin(), other.end(), sorted_quad(tv)))
-        lower(s, tet_score(m, tv));
+          !std::binary_search(other.begin(), other.end(), sorted_quad(tv))) {
+        Score x = tet_score(m, tv);
+        if (with_dt)
+          x.dt = tet_time_step(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
+        lower(s, x);
+      }
     }
     return s;
   };
@@ -192,8 +204,46 @@ struct Candidate {
 // the polish. The pairs tried: each point of insertion_points with the smallest cavity and with
 // its Bowyer-Watson growth; the kernel centre of the smallest cavity with it, and the kernel
 // centre of its growth from that centre with that growth.
+// The live tets of m holding vertex v (a local copy: a scan).
+std::vector<int> star_of(const TetMesh& m, int v) {
+  std::vector<int> star;
+  for (int x = 0; x < m.nb_tets(); ++x) {
+    const int* xv = tet_of(m, x);
+    if (xv[0] >= 0 && std::find(xv, xv + 4, v) != xv + 4) star.push_back(x);
+  }
+  return star;
+}
+
+// The angle ceiling of to_mesh_extremes: min(angle_ceiling, the mesh's maximum at the start).
+double extremes_ceiling(const RepairOptions& o, const Score& extremes) {
+  return std::min(o.angle_ceiling, extremes.max_angle);
+}
+
+// The bounds of a simplex-search placement that replaces the tets `replaced` of m
+// (to_mesh_extremes): the dihedral angles within [the mesh's minimum at the start, max(the replaced
+// tets' maximum, extremes_ceiling)], the element time step, with the guard on, at least min(the
+// replaced tets' smallest, the guard's floor) -- what the acceptance of a result asks of the tets
+// it changes.
+NelderMeadVertexOptions placement_bounds(const TetMesh& m, const std::vector<int>& replaced,
+                                         const RepairOptions& o, const Score& extremes) {
+  double max_angle = 0, dt = kInf;
+  for (int x : replaced) {
+    const int* xv = tet_of(m, x);
+    max_angle = std::max(max_angle, tet_score(m, xv).max_angle);
+    if (o.dt_guard.on)
+      dt = std::min(dt,
+                    tet_time_step(m.point(xv[0]), m.point(xv[1]), m.point(xv[2]), m.point(xv[3])));
+  }
+  NelderMeadVertexOptions no;
+  no.angle_scale = kAngleScale;
+  no.angle_floor = extremes.angle;
+  no.angle_ceiling = std::max(max_angle, extremes_ceiling(o, extremes));
+  if (o.dt_guard.on) no.dt_floor = std::min(dt, o.dt_guard.floor);
+  return no;
+}
+
 Candidate try_insertion(const TetMesh& m, const ConstrainedFaces& constrained, int t,
-                        const RepairOptions& o) {
+                        const RepairOptions& o, const Score& extremes) {
   Candidate best;
   SwapPlan best_plan;
   Vec3 best_p{};
@@ -229,12 +279,34 @@ Candidate try_insertion(const TetMesh& m, const ConstrainedFaces& constrained, i
     consider(centre, grown);
   if (best_min == -kInf) return best;
   best.mesh = m;
+  const int p = best.mesh.nb_vertices();
   insert_vertex(best.mesh, best_plan, best_p.data());
   free_only_around(best.mesh, best_plan.new_ids);
   local_polish(best.mesh, o);
+  if (o.to_mesh_extremes) {
+    const std::vector<int> star = star_of(best.mesh, p);
+    nelder_mead_vertex(best.mesh, p, star.data(), static_cast<int>(star.size()),
+                       placement_bounds(m, best_plan.old_tets, o, extremes));
+  }
   best.inserted = true;
   best.valid = true;
   return best;
+}
+
+// The interior vertices of tet t of the copy moved one after the other by the simplex search
+// within the bounds (to_mesh_extremes).
+Candidate try_moves(const TetMesh& m, int t, const RepairOptions& o, const Score& extremes) {
+  Candidate c;
+  c.mesh = m;
+  for (int k = 0; k < 4; ++k) {
+    const int v = tet_of(m, t)[k];
+    if (m.vclass[v].dim != 3) continue;
+    const std::vector<int> star = star_of(c.mesh, v);
+    c.valid |= nelder_mead_vertex(c.mesh, v, star.data(), static_cast<int>(star.size()),
+                                  placement_bounds(c.mesh, star, o, extremes))
+                   .moved;
+  }
+  return c;
 }
 
 // A flip of tet t of the copy (edge removal of edge e < 6, or 2-3 flip of face e - 6), whatever
@@ -319,17 +391,25 @@ RepairStats repair_slivers(TetMesh& mesh, const RepairOptions& o) {
       Score best_score;
       auto offer = [&](Candidate&& c) {
         if (!c.valid) return;
-        const auto [was, now] = changed_scores(local.mesh, c.mesh);
-        if (!(now.objective > was.objective + o.min_gain) || now.q < was.q || now.angle < was.angle)
+        const auto [was, now] = changed_scores(local.mesh, c.mesh, o.dt_guard.on);
+        if (!time_step_allows(o.dt_guard, was.dt, now.dt)) return;
+        if (!(now.objective > was.objective + o.min_gain) || now.q < was.q) return;
+        // The angles of what changes: not below their minimum before (with to_mesh_extremes: the
+        // mesh's minimum at the start), nor above max(their maximum before, extremes_ceiling).
+        if (o.to_mesh_extremes
+                ? now.angle < std::min(was.angle, start.angle) ||
+                      now.max_angle > std::max(was.max_angle, extremes_ceiling(o, start))
+                : now.angle < was.angle)
           return;
         if (!best.valid || now.objective > best_score.objective) {
           best = std::move(c);
           best_score = now;
         }
       };
-      if (o.insert) offer(try_insertion(local.mesh, local_constrained, 0, o));
+      if (o.insert) offer(try_insertion(local.mesh, local_constrained, 0, o, start));
       if (o.flip)
         for (int e = 0; e < 10; ++e) offer(try_flip(local.mesh, local_constrained, 0, e, o));
+      if (o.to_mesh_extremes) offer(try_moves(local.mesh, 0, o, start));
       if (!best.valid) continue;
       if (!commit_local_mesh(mesh, local, best.mesh, &free_slots)) continue;
       ++committed;

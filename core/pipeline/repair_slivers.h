@@ -11,11 +11,13 @@
 // The copy holds the tet, its face neighbours, the rings of its edges and the stars of their free
 // vertices, so everything that changes is in it. A result is kept when the minimum over the copy
 // of min(Q, min dihedral angle / 60 degrees) rises by min_gain and neither the minimum Q nor the
-// minimum dihedral angle of the copy falls: the mesh's minima never decrease. Vertices with
+// minimum dihedral angle of the copy falls: the mesh's minima never decrease (with
+// to_mesh_extremes, below: the angles within the mesh's extremes instead). Vertices with
 // vclass.dim < 3 never move, constrained triangles never change, every tet stays positively
 // oriented (exact orient3d). Serial and in a fixed order: the result depends on the input only.
 #pragma once
 #include "core/mesh/tet_mesh.h"
+#include "core/quality/time_step_guard.h"
 #include "core/smoothing/smooth_maxmin3.h"
 
 namespace cvtmesh {
@@ -38,6 +40,18 @@ struct RepairOptions {
     return m;
   }();
   int rounds = 2;
+  // The last repair's rule (optimize's repair of the worst tets): the angles of what a result
+  // changes may go down to the mesh's minimum dihedral angle at the start (not only to their own
+  // minimum before) and up to max(their maximum before, min(angle_ceiling, the mesh's maximum at
+  // the start)); an inserted vertex, and the interior vertices of the tet tried, are then placed
+  // by a simplex search within those bounds (nelder_mead_vertex.h). So the global minimum angle
+  // never falls and the maximum never rises, while a tet fixed between locked vertices (the tip
+  // of a valence-3 surface vertex, a CAD corner) may take the room the rest of the mesh leaves.
+  bool to_mesh_extremes = false;
+  double angle_ceiling = 150;  // degrees (to_mesh_extremes)
+  // The time-step guard (time_step_guard.h; off by default): a result is also refused when the
+  // smallest element time step of the tets it changes falls below min(its value before, floor).
+  TimeStepGuard dt_guard;
 };
 
 struct RepairStats {

@@ -10,6 +10,7 @@
 #include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
+#include "core/quality/time_step_guard.h"
 #include "core/smoothing/smooth_maxmin3.h"
 #include "core/swap/swap_slivers.h"
 #include "tests/support/test_meshes.h"
@@ -100,6 +101,7 @@ const MeshData& polished_cube_sphere() {
     OptimizeOptions o;
     o.max_iterations = 10;
     o.polish_repair = false;
+    o.auto_refine = false;  // the same path as the run with the repair below
     optimize(m, o);
     return m;
   }();
@@ -142,12 +144,53 @@ TEST(RepairSlivers, NeverLowersTheMinimaOfAPolishedCubeSphereAndIsDeterministic)
   EXPECT_EQ(again.tet_region, m.tet_region);
 }
 
+TEST(RepairSlivers, ToTheMeshExtremesTheAnglesStayWithinTheMeshsAndTheTimeStepIsGuarded) {
+  // The last repair's rule (to_mesh_extremes) on the polished cube minus a ball, its thresholds
+  // high so that many tets are tried: what changes may use the angles down to the mesh's minimum
+  // and up to min(150, the mesh's maximum), each result under the time-step guard.
+  const TetMesh start = polished_cube_sphere().tet;
+  RepairOptions o;
+  o.q_below = 0.6;
+  o.angle_below = 0;
+  o.max_tets = 16;
+  o.passes = 1;
+  o.to_mesh_extremes = true;
+  o.dt_guard = time_step_guard(start, 1.0);
+  TetMesh m = start;
+  const RepairStats s = repair_slivers(m, o);
+  ::testing::Test::RecordProperty(
+      "repair", std::to_string(s.nb_tried) + " tried, " + std::to_string(s.nb_inserted) +
+                    " inserted, " + std::to_string(s.nb_flip_smooth) + " other; Q_min " +
+                    std::to_string(s.q_min_before) + " -> " + std::to_string(s.q_min_after));
+  EXPECT_GT(s.nb_inserted + s.nb_flip_smooth, 0);
+  const QualityStats before = quality_stats(start, "before"), after = quality_stats(m, "after");
+  EXPECT_GE(after.q_min, before.q_min);
+  EXPECT_GE(after.min_angle, before.min_angle);
+  EXPECT_LE(after.max_angle, before.max_angle);
+  EXPECT_GE(min_time_step(m), min_time_step(start));
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok) << (c.problems.empty() ? "" : c.problems[0]);
+  EXPECT_EQ(nb_not_positive(m), 0);
+  EXPECT_NO_THROW(verify_optimized(start, m));
+  // It does what the default rule does on these tets and more: a higher minimum Q.
+  RepairOptions strict = o;
+  strict.to_mesh_extremes = false;
+  TetMesh d = start;
+  repair_slivers(d, strict);
+  EXPECT_GT(after.q_min, quality_stats(d, "default rule").q_min);
+  TetMesh again = start;
+  repair_slivers(again, o);
+  EXPECT_EQ(again.xyz, m.xyz);
+  EXPECT_EQ(again.tets, m.tets);
+}
+
 TEST(RepairSlivers, ThePipelinesPolishEndsWithItAndVerifiesTheResult) {
   // The same run with the repair (the default): its minima are at least those without it (the
   // repair runs last), the run's own verify_optimized passed, the result is reproducible.
   MeshData a = testing::cube_sphere(0.14, 0.1), b = a;
   OptimizeOptions o;
   o.max_iterations = 10;
+  o.auto_refine = false;  // the same path as polished_cube_sphere's (no refined run kept)
   ASSERT_TRUE(o.polish_repair);
   const OptimizeResult r = optimize(a, o);
   optimize(b, o);
