@@ -200,10 +200,6 @@ struct Candidate {
   bool valid = false;
 };
 
-// Insertion into tet t of the copy: the best (point, cavity) by the minimum of the new tets, then
-// the polish. The pairs tried: each point of insertion_points with the smallest cavity and with
-// its Bowyer-Watson growth; the kernel centre of the smallest cavity with it, and the kernel
-// centre of its growth from that centre with that growth.
 // The live tets of m holding vertex v (a local copy: a scan).
 std::vector<int> star_of(const TetMesh& m, int v) {
   std::vector<int> star;
@@ -242,6 +238,11 @@ NelderMeadVertexOptions placement_bounds(const TetMesh& m, const std::vector<int
   return no;
 }
 
+// Insertion into tet t of the copy: the best (point, cavity) by the minimum of the new tets, then
+// the polish. The pairs tried: each point of insertion_points with the smallest cavity and with
+// its Bowyer-Watson growth; the kernel centre of the smallest cavity with it, and the kernel
+// centre of its growth from that centre with that growth. With to_mesh_extremes the inserted vertex
+// is then placed by the simplex search within placement_bounds.
 Candidate try_insertion(const TetMesh& m, const ConstrainedFaces& constrained, int t,
                         const RepairOptions& o, const Score& extremes) {
   Candidate best;

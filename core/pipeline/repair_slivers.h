@@ -7,7 +7,9 @@
 //     apices of regular tets on the tet's faces, ...), then max-min smoothing (smooth_maxmin3,
 //     which moves p and the free vertices around) and Q flips (swap_slivers) on the copy;
 //   - composite flip + smooth: an edge removal or 2-3 flip of the tet even if it lowers the local
-//     minimum, then the same smoothing and flips.
+//     minimum, then the same smoothing and flips;
+//   - with to_mesh_extremes (below): the tet's interior vertices moved by a simplex search within
+//     the bounds (nelder_mead_vertex.h), which also places the inserted vertex.
 // The copy holds the tet, its face neighbours, the rings of its edges and the stars of their free
 // vertices, so everything that changes is in it. A result is kept when the minimum over the copy
 // of min(Q, min dihedral angle / 60 degrees) rises by min_gain and neither the minimum Q nor the
