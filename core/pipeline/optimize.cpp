@@ -295,6 +295,15 @@ BoundaryModel boundary_model(const TetMesh& mesh, const OptimizeOptions& o) {
   return make_discrete_boundary(mesh, bo);
 }
 
+// The polish's time-step guard for a stage that starts now (issue 16): every step may never
+// fall with the dt objective, steps below polish_dt_floor x the mesh's smallest are protected with
+// the guard on, off otherwise.
+TimeStepGuard polish_time_step_guard(const TetMesh& mesh, const OptimizeOptions& o) {
+  if (o.objective == "dt") return time_step_guard(mesh, std::numeric_limits<double>::infinity());
+  if (o.polish_dt_guard) return time_step_guard(mesh, o.polish_dt_floor);
+  return TimeStepGuard{};
+}
+
 // A sliver repair (repair_slivers) of the tets below ro's thresholds, if any, as an optional last
 // step: the mesh before it is kept if it breaks an invariant, or (with the time-step guard on) if
 // the mesh's smallest element time step falls (issue 16). True when the mesh changed.
@@ -361,9 +370,7 @@ bool repair_worst_tets(TetMesh& mesh, const OptimizeOptions& o) {
   ro.q_below = std::min(kWorstRepairQ, kWorstRepairFactor * min_quality(mesh, Measure::kQ));
   ro.angle_below = 0;
   ro.to_mesh_extremes = true;
-  if (o.polish_dt_guard || o.objective == "dt")
-    ro.dt_guard = time_step_guard(
-        mesh, o.objective == "dt" ? std::numeric_limits<double>::infinity() : o.polish_dt_floor);
+  ro.dt_guard = polish_time_step_guard(mesh, o);
   return repair_below(mesh, o, ro);
 }
 
@@ -385,10 +392,7 @@ void smooth_after_restore(TetMesh& mesh, const std::vector<double>& before,
   }
   MaxMinOptions mo;
   mo.only_tets = &around;
-  if (o.objective == "dt")
-    mo.dt_guard = time_step_guard(mesh, std::numeric_limits<double>::infinity());
-  else if (o.polish_dt_guard)
-    mo.dt_guard = time_step_guard(mesh, o.polish_dt_floor);
+  mo.dt_guard = polish_time_step_guard(mesh, o);
   smooth_maxmin3(mesh, mo);
 }
 
@@ -414,11 +418,7 @@ void raise_mean_quality(TetMesh& mesh, const OptimizeOptions& o, const BoundaryM
   // Every step before keeps the adjacency current (the swaps, collapses, boundary flips and cap
   // removals repair it in place): no rebuild (~1.5 s at 10M tets).
   if (mesh.adj.size() != mesh.tets.size()) build_adjacency(mesh);
-  TimeStepGuard dt_guard;
-  if (o.objective == "dt")
-    dt_guard = time_step_guard(mesh, std::numeric_limits<double>::infinity());
-  else if (o.polish_dt_guard)
-    dt_guard = time_step_guard(mesh, o.polish_dt_floor);
+  const TimeStepGuard dt_guard = polish_time_step_guard(mesh, o);
   SwapOptions so;
   so.measure = Measure::kQ;
   so.sum_criterion = true;

@@ -222,19 +222,15 @@ double extremes_ceiling(const RepairOptions& o, const Score& extremes) {
 // it changes.
 NelderMeadVertexOptions placement_bounds(const TetMesh& m, const std::vector<int>& replaced,
                                          const RepairOptions& o, const Score& extremes) {
-  double max_angle = 0, dt = kInf;
-  for (int x : replaced) {
-    const int* xv = tet_of(m, x);
-    max_angle = std::max(max_angle, tet_score(m, xv).max_angle);
-    if (o.dt_guard.on)
-      dt = std::min(dt,
-                    tet_time_step(m.point(xv[0]), m.point(xv[1]), m.point(xv[2]), m.point(xv[3])));
-  }
+  double max_angle = 0;
+  for (int x : replaced) max_angle = std::max(max_angle, tet_score(m, tet_of(m, x)).max_angle);
   NelderMeadVertexOptions no;
   no.angle_scale = kAngleScale;
   no.angle_floor = extremes.angle;
   no.angle_ceiling = std::max(max_angle, extremes_ceiling(o, extremes));
-  if (o.dt_guard.on) no.dt_floor = std::min(dt, o.dt_guard.floor);
+  if (o.dt_guard.on)
+    no.dt_floor = std::min(min_time_step(m, replaced.data(), replaced.data() + replaced.size()),
+                           o.dt_guard.floor);
   return no;
 }
 
