@@ -30,10 +30,7 @@ TimeStepGuard time_step_guard(const TetMesh& mesh, double factor) {
   TimeStepGuard g;
   g.on = true;
   g.floor = factor * min_time_step(mesh);
-  const VertexTimeSteps vs = vertex_time_steps(mesh);
-  double m = std::numeric_limits<double>::infinity();
-  for (int v = 0; v < mesh.nb_vertices(); ++v) m = std::min(m, vs.dt(v));
-  g.vertex_floor = factor * m;
+  g.vertex_floor = factor * min_vertex_time_step(mesh);
   return g;
 }
 

@@ -54,4 +54,11 @@ VertexTimeSteps vertex_time_steps(const TetMesh& mesh) {
   return s;
 }
 
+double min_vertex_time_step(const TetMesh& mesh) {
+  const VertexTimeSteps s = vertex_time_steps(mesh);
+  double m = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < mesh.nb_vertices(); ++v) m = std::min(m, s.dt(v));
+  return m;
+}
+
 }  // namespace cvtmesh

@@ -26,4 +26,7 @@ struct VertexTimeSteps {
 
 VertexTimeSteps vertex_time_steps(const TetMesh& mesh);
 
+// The smallest nodal time step of mesh's vertices (+inf for a mesh without tets).
+double min_vertex_time_step(const TetMesh& mesh);
+
 }  // namespace cvtmesh

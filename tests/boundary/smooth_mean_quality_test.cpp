@@ -32,26 +32,9 @@ namespace {
 
 constexpr int kN = 4;  // the box [0, 4]^3, lattice spacing 1
 
-// The lattice points of the box, jittered within their own face / edge (corners exact),
-// deterministic; then their Delaunay tetrahedralization.
+// The box's lattice jittered within its faces and edges (test_meshes.h), deterministic.
 TetMesh jittered_box(double amount) {
-  std::vector<double> xyz;
-  unsigned state = 777;
-  auto rnd = [&] {
-    state = state * 1664525u + 1013904223u;
-    return (state >> 8) / double(1 << 24) * 2 - 1;
-  };
-  for (int i = 0; i <= kN; ++i)
-    for (int j = 0; j <= kN; ++j)
-      for (int k = 0; k <= kN; ++k) {
-        double p[3] = {double(i), double(j), double(k)};
-        for (int d = 0; d < 3; ++d) {
-          const double r = rnd();
-          if (p[d] != 0 && p[d] != kN) p[d] += amount * r;
-        }
-        xyz.insert(xyz.end(), p, p + 3);
-      }
-  return testing::delaunay_of_points(xyz);
+  return testing::jittered_box(kN, amount, 777u);
 }
 
 struct Figures {

@@ -202,4 +202,24 @@ std::vector<double> cube_lattice_with_hull_points() {
   return p;
 }
 
+TetMesh jittered_box(int n, double amount, unsigned seed) {
+  std::vector<double> xyz;
+  unsigned state = seed;
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / double(1 << 24) * 2 - 1;
+  };
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
+        double p[3] = {double(i), double(j), double(k)};
+        for (int d = 0; d < 3; ++d) {
+          const double r = rnd();
+          if (p[d] != 0 && p[d] != n) p[d] += amount * r;
+        }
+        xyz.insert(xyz.end(), p, p + 3);
+      }
+  return delaunay_of_points(xyz);
+}
+
 }  // namespace cvtmesh::testing

@@ -65,4 +65,9 @@ std::vector<double> cube_lattice(int n, double jitter = 0);
 // and the centres of the top face's squares.
 std::vector<double> cube_lattice_with_hull_points();
 
+// The Delaunay tetrahedralization of the (n+1)^3 lattice points of [0, n]^3 (spacing 1), each
+// coordinate not on the box's faces jittered by up to `amount` (a point stays within its own face
+// or edge, corners exact), from a linear congruential generator seeded with `seed`: deterministic.
+TetMesh jittered_box(int n, double amount, unsigned seed);
+
 }  // namespace cvtmesh::testing

@@ -1,0 +1,264 @@
+#include "core/boundary/raise_nodal_steps.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "core/boundary/boundary_fans.h"
+#include "core/boundary/boundary_move.h"
+#include "core/geometry/predicates.h"
+#include "core/geometry/vec3.h"
+#include "core/mesh/vertex_tets.h"
+#include "core/quality/element_time_step.h"
+#include "core/quality/quality.h"
+#include "core/quality/vertex_time_step.h"
+
+namespace cvtmesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+const int* tet_of(const TetMesh& m, int t) {
+  return &m.tets[4 * static_cast<std::size_t>(t)];
+}
+
+// The mover w's star: its tets, their vertices and, per vertex, its nodal sums over its tets
+// outside the star (what a move of w does not change).
+struct Star {
+  std::vector<int> tets;
+  std::vector<double> ceiling;  // per tet: its maximum dihedral angle's bound (degrees)
+  std::vector<int> verts;
+  std::vector<double> k_rest, m_rest;
+};
+
+Star star_of(const TetMesh& mesh, const VertexTets& vt, const VertexTimeSteps& steps, int w,
+             const NodalRaiseOptions& o) {
+  Star s;
+  s.tets.assign(vt.begin_of(w), vt.end_of(w));
+  for (int t : s.tets)
+    for (int k = 0; k < 4; ++k)
+      if (std::find(s.verts.begin(), s.verts.end(), tet_of(mesh, t)[k]) == s.verts.end())
+        s.verts.push_back(tet_of(mesh, t)[k]);
+  for (int t : s.tets) {
+    const int* v = tet_of(mesh, t);
+    s.ceiling.push_back(
+        std::max(o.angle_ceiling, tet_table_qualities(mesh.point(v[0]), mesh.point(v[1]),
+                                                      mesh.point(v[2]), mesh.point(v[3]))[3]));
+  }
+  s.k_rest.resize(s.verts.size());
+  s.m_rest.resize(s.verts.size());
+  for (std::size_t i = 0; i < s.verts.size(); ++i) {
+    s.k_rest[i] = steps.kdiag[s.verts[i]];
+    s.m_rest[i] = steps.mass[s.verts[i]];
+  }
+  for (int t : s.tets) {
+    const int* v = tet_of(mesh, t);
+    double k[4], m;
+    tet_vertex_terms(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), k, &m);
+    for (int j = 0; j < 4; ++j) {
+      const std::size_t i = std::find(s.verts.begin(), s.verts.end(), v[j]) - s.verts.begin();
+      s.k_rest[i] -= k[j];
+      s.m_rest[i] -= m;
+    }
+  }
+  return s;
+}
+
+// The star's value with the mover where the mesh has it now: the minimum over its vertices of
+// min(nodal step, target), or -inf when a tet leaves the bounds or is not positively oriented.
+// k_sum / m_sum: scratch, the vertices' sums.
+double star_value(const TetMesh& mesh, const Star& s, const NodalRaiseOptions& o,
+                  std::vector<double>& k_sum, std::vector<double>& m_sum) {
+  k_sum = s.k_rest;
+  m_sum = s.m_rest;
+  for (std::size_t n = 0; n < s.tets.size(); ++n) {
+    const int* v = tet_of(mesh, s.tets[n]);
+    const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]),
+                 *d = mesh.point(v[3]);
+    if (orient3d(a, b, c, d) <= 0) return -kInf;
+    const std::array<double, 4> q = tet_table_qualities(a, b, c, d);
+    if (q[0] < o.q_floor || q[2] < o.angle_floor || q[3] > s.ceiling[n]) return -kInf;
+    if (o.dt_floor > 0 && tet_time_step(a, b, c, d) < o.dt_floor) return -kInf;
+    double k[4], m;
+    tet_vertex_terms(a, b, c, d, k, &m);
+    for (int j = 0; j < 4; ++j) {
+      const std::size_t i = std::find(s.verts.begin(), s.verts.end(), v[j]) - s.verts.begin();
+      k_sum[i] += k[j];
+      m_sum[i] += m;
+    }
+  }
+  double value = o.target;
+  for (std::size_t i = 0; i < s.verts.size(); ++i)
+    if (k_sum[i] > 0 && m_sum[i] > 0) value = std::min(value, 2.0 / std::sqrt(k_sum[i] / m_sum[i]));
+  return value;
+}
+
+// The search directions of mover w: the coordinate axes and the cube's diagonals for an interior
+// vertex, six directions of its fan's tangent plane for a surface vertex, the two ways along its
+// curve's tangent for a curve vertex (none if the curve's tangent cannot be found).
+std::vector<Vec3> directions(const TetMesh& mesh, const BoundaryModel& model,
+                             const BoundaryFans& fans, int w, double len) {
+  std::vector<Vec3> d;
+  const BoundaryRole role = model.role_of(w).role;
+  if (role == BoundaryRole::kInterior) {
+    for (int k = 0; k < 3; ++k)
+      for (double s : {1.0, -1.0}) {
+        Vec3 e{0, 0, 0};
+        e[k] = s;
+        d.push_back(e);
+      }
+    const double r = 1 / std::sqrt(3.0);
+    for (double x : {r, -r})
+      for (double y : {r, -r})
+        for (double z : {r, -r}) d.push_back({x, y, z});
+    return d;
+  }
+  const double* P = mesh.point(w);
+  if (role == BoundaryRole::kSurface) {
+    const Vec3 n = fan_normal(mesh, fans, w);
+    if (!(norm(n) > 0)) return d;
+    const Vec3 nn = (1 / norm(n)) * n;
+    // Two unit vectors spanning the plane orthogonal to nn.
+    const Vec3 helper = std::fabs(nn[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    Vec3 u = cross(nn, helper);
+    u = (1 / norm(u)) * u;
+    const Vec3 v = cross(nn, u);
+    for (int k = 0; k < 6; ++k) {
+      const double a = k * 3.14159265358979323846 / 3;
+      d.push_back(std::cos(a) * u + std::sin(a) * v);
+    }
+    return d;
+  }
+  if (role == BoundaryRole::kCurve) {
+    double best = 0;
+    Vec3 axis{0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      double probe[3] = {P[0], P[1], P[2]}, q[3];
+      probe[k] += 0.1 * len;
+      if (!project_on_entity(model, w, probe, q)) continue;
+      const Vec3 t = sub(q, P);
+      if (norm(t) > best) {
+        best = norm(t);
+        axis = (1 / best) * t;
+      }
+    }
+    if (best > 1e-9 * len) {
+      d.push_back(axis);
+      d.push_back(-1.0 * axis);
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+NodalRaiseStats raise_nodal_steps(TetMesh& mesh, const BoundaryModel& model,
+                                  const NodalRaiseOptions& o) {
+  NodalRaiseStats stats;
+  VertexTimeSteps steps = vertex_time_steps(mesh);
+  const int nv = mesh.nb_vertices();
+  double lowest = kInf;
+  std::vector<std::pair<double, int>> low;
+  for (int v = 0; v < nv; ++v) {
+    lowest = std::min(lowest, steps.dt(v));
+    if (steps.dt(v) < o.target) low.push_back({steps.dt(v), v});
+  }
+  stats.min_before = stats.min_after = lowest;
+  stats.nb_low = static_cast<long>(low.size());
+  if (low.empty()) return stats;
+  const VertexTets vt = vertex_tets(mesh);
+  const BoundaryFans fans = model.geometry ? boundary_fans(mesh) : BoundaryFans{};
+  std::vector<double> k_sum, m_sum, delta;
+  for (int pass = 0; pass < o.passes && !low.empty(); ++pass) {
+    std::sort(low.begin(), low.end());
+    if (static_cast<int>(low.size()) > o.max_vertices) low.resize(o.max_vertices);
+    long moved_this_pass = 0;
+    for (const auto& [unused, v] : low) {
+      if (!(steps.dt(v) < o.target)) continue;  // raised by an earlier vertex's moves
+      // The movers: v and the vertices sharing a tet with it, in increasing order.
+      std::vector<int> movers;
+      for (const int* t = vt.begin_of(v); t != vt.end_of(v); ++t)
+        for (int k = 0; k < 4; ++k) movers.push_back(tet_of(mesh, *t)[k]);
+      std::sort(movers.begin(), movers.end());
+      movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+      for (int w : movers) {
+        const BoundaryRole role = model.role_of(w).role;
+        const bool interior = role == BoundaryRole::kInterior;
+        if (interior ? mesh.vclass[w].dim != 3 : !(model.geometry && model.movable(w))) continue;
+        const Star s = star_of(mesh, vt, steps, w, o);
+        double* P = mesh.point(w);
+        const Vec3 start = vec3(P);
+        const double start_value = star_value(mesh, s, o, k_sum, m_sum);
+        if (!(start_value > -kInf) || start_value >= o.target) continue;
+        const double len = shortest_star_edge(mesh, vt.begin_of(w), vt.end_of(w), w);
+        if (!(len > 0) || len == kInf) continue;
+        const std::vector<Vec3> dirs = directions(mesh, model, fans, w, len);
+        double value = start_value, step = o.initial_step * len;
+        int evaluations = 0;
+        while (step >= o.final_step * len && evaluations < o.max_evaluations) {
+          const Vec3 here = vec3(P);
+          Vec3 best_pos = here;
+          double best = value;
+          for (const Vec3& d : dirs) {
+            if (++evaluations > o.max_evaluations) break;
+            const Vec3 wanted = here + step * d;
+            Vec3 pos = wanted;
+            if (!interior) {
+              for (int c = 0; c < 3; ++c) P[c] = here[c];
+              // The Hausdorff check after the cheaper ones, as the boundary max-min does.
+              const PlannedBoundaryMove plan =
+                  plan_boundary_move(mesh, model, vt, fans, w, wanted.data(), kInf);
+              if (plan.status != BoundaryMoveStatus::kOk) continue;
+              pos = {plan.position[0], plan.position[1], plan.position[2]};
+            }
+            for (int c = 0; c < 3; ++c) P[c] = pos[c];
+            if (!interior && !fan_within_tolerance(mesh, model, fans, w, pos.data(), o.hausdorff))
+              continue;
+            const double x = star_value(mesh, s, o, k_sum, m_sum);
+            if (x > best) {
+              best = x;
+              best_pos = pos;
+            }
+          }
+          for (int c = 0; c < 3; ++c) P[c] = best_pos[c];
+          if (best > value) {
+            value = best;
+            if (value >= o.target) break;
+          } else {
+            step *= 0.5;
+          }
+        }
+        bool keep = value > start_value * (1 + 1e-9);
+        if (keep && !interior && o.volume_budget) {
+          const Vec3 now = vec3(P);
+          for (int c = 0; c < 3; ++c) P[c] = start[c];
+          keep = o.volume_budget->admits(mesh, vt, w, now.data(), delta);
+          if (keep) o.volume_budget->commit(delta);
+          for (int c = 0; c < 3; ++c) P[c] = now[c];
+        }
+        if (!keep) {
+          for (int c = 0; c < 3; ++c) P[c] = start[c];
+          continue;
+        }
+        ++stats.nb_moved;
+        ++moved_this_pass;
+        // The sums of the star's vertices at the new position.
+        star_value(mesh, s, o, k_sum, m_sum);
+        for (std::size_t i = 0; i < s.verts.size(); ++i) {
+          steps.kdiag[s.verts[i]] = k_sum[i];
+          steps.mass[s.verts[i]] = m_sum[i];
+        }
+      }
+    }
+    if (moved_this_pass == 0) break;
+    low.clear();
+    for (int v = 0; v < nv; ++v)
+      if (steps.dt(v) < o.target) low.push_back({steps.dt(v), v});
+  }
+  stats.min_after = kInf;
+  for (int v = 0; v < nv; ++v) stats.min_after = std::min(stats.min_after, steps.dt(v));
+  return stats;
+}
+
+}  // namespace cvtmesh
