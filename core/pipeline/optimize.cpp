@@ -606,7 +606,8 @@ int coarsen_surface(TetMesh& mesh, const OptimizeOptions& o, BoundaryModel& b, d
 // (boundary_lloyd), Lloyd again to re-converge the interior, SWAP, and the polish with the boundary
 // max-min after its interior max-min in each iteration, then a last boundary max-min after the
 // sliver repair, the repair of the tets below the targets and the average-quality pass
-// (raise_mean_quality).
+// (raise_mean_quality), the last repair of the worst tets (repair_worst_tets) and the raise of
+// the nodal time steps below the input's (raise_low_time_steps).
 void run_cvdt_swap_smooth_free3(TetMesh& mesh, const OptimizeOptions& o, BoundaryModel& b,
                                 const InputSteps& input, OptimizeResult& r) {
   // The moves and flips check a few points per triangle (and the input's vertices on the other
