@@ -1,11 +1,13 @@
 #include "core/boundary/boundary_move.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/boundary/boundary_hausdorff.h"
 #include "core/boundary/surface_folds.h"
 #include "core/boundary/triangle_set_distance.h"
 #include "core/geometry/predicates.h"
+#include "core/geometry/vec3.h"
 
 namespace cvtmesh {
 
@@ -14,6 +16,23 @@ bool project_on_entity(const BoundaryModel& model, int v, const double* p, doubl
   if (r.role == BoundaryRole::kSurface) return model.geometry->closest_on_surface(r.entity, p, q);
   if (r.role == BoundaryRole::kCurve) return model.geometry->closest_on_curve(r.entity, p, q);
   return false;
+}
+
+bool curve_tangent(const BoundaryModel& model, int v, const double* p, double len, double* axis) {
+  if (model.role_of(v).role != BoundaryRole::kCurve) return false;
+  double best = 0;
+  for (int k = 0; k < 3; ++k) {
+    double probe[3] = {p[0], p[1], p[2]}, q[3];
+    probe[k] += 0.1 * len;
+    if (!project_on_entity(model, v, probe, q)) continue;
+    const Vec3 t = sub(q, p);
+    if (norm(t) > best) {
+      best = norm(t);
+      const Vec3 u = (1 / best) * t;
+      std::copy(u.begin(), u.end(), axis);
+    }
+  }
+  return best > 1e-9 * len;
 }
 
 PlannedBoundaryMove plan_boundary_move(const TetMesh& m, const BoundaryModel& model,

@@ -59,4 +59,9 @@ void apply_boundary_move(TetMesh& mesh, int v, const PlannedBoundaryMove& move);
 // Projects p onto v's entity (q, 3 doubles); false when v does not move on one.
 bool project_on_entity(const BoundaryModel& model, int v, const double* p, double* q);
 
+// The unit tangent (axis, 3 doubles) at p of curve vertex v's curve: of the projections of p
+// moved by 0.1 len along each coordinate axis, the farthest from p, normalized. False when the
+// projections do not move (the farthest within 1e-9 len of p) or v is on no curve.
+bool curve_tangent(const BoundaryModel& model, int v, const double* p, double len, double* axis);
+
 }  // namespace cvtmesh

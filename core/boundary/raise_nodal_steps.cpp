@@ -130,23 +130,10 @@ std::vector<Vec3> directions(const TetMesh& mesh, const BoundaryModel& model,
     }
     return d;
   }
-  if (role == BoundaryRole::kCurve) {
-    double best = 0;
-    Vec3 axis{0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-      double probe[3] = {P[0], P[1], P[2]}, q[3];
-      probe[k] += 0.1 * len;
-      if (!project_on_entity(model, w, probe, q)) continue;
-      const Vec3 t = sub(q, P);
-      if (norm(t) > best) {
-        best = norm(t);
-        axis = (1 / best) * t;
-      }
-    }
-    if (best > 1e-9 * len) {
-      d.push_back(axis);
-      d.push_back(-1.0 * axis);
-    }
+  Vec3 axis;
+  if (role == BoundaryRole::kCurve && curve_tangent(model, w, P, len, axis.data())) {
+    d.push_back(axis);
+    d.push_back(-1.0 * axis);
   }
   return d;
 }

@@ -175,18 +175,7 @@ BoundaryMaxMinStats smooth_boundary_maxmin(TetMesh& mesh, const BoundaryModel& m
           space.axis = fan_normal(mesh, fans, v);
         } else {
           space.kind = TangentSpace::kLine;
-          double best = 0;
-          for (int k = 0; k < 3; ++k) {
-            double probe[3] = {P[0], P[1], P[2]}, q[3];
-            probe[k] += 0.1 * lmin;
-            if (!project_on_entity(model, v, probe, q)) continue;
-            const Vec3 t = sub(q, P);
-            if (norm(t) > best) {
-              best = norm(t);
-              space.axis = (1 / best) * t;
-            }
-          }
-          if (!(best > 1e-9 * lmin)) break;
+          if (!curve_tangent(model, v, P, lmin, space.axis.data())) break;
         }
         cand.clear();
         double fmin = kInf;
