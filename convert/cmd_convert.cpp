@@ -18,6 +18,8 @@ void register_convert(CLI::App& app) {
   add_output_flags(c, *out);
   commands().push_back({c, [in, out] {
                           const MeshData d = read_mesh(in->path, in->to_read_options());
+                          for (const auto& note : d.model().read_notes)
+                            info() << "cvtmesh: note: " << note << "\n";
                           write_mesh(d, out->path, out->to_write_options(d, in->path));
                           info() << "cvtmesh: wrote " << out->path << "\n";
                           return 0;

@@ -145,6 +145,8 @@ void register_optimize(CLI::App& app) {
            progress->begin(model ? "meshing" : "reading", in->path);
            d = read_mesh(in->path, in->to_read_options());
            progress->finish();
+           for (const auto& note : d.model().read_notes)
+             info() << "cvtmesh: note: " << note << "\n";
          }
          // A bad output location fails now, not after the optimization.
          if (writer) check_can_write(out->path, out->to_write_options(d, in->path));

@@ -51,7 +51,11 @@ class DenseIds {
 
 long add_missing_facets(int dim) {
   if (dim != 2 && dim != 3) return 0;
+  // Linear cells and facets, and their order-2 kind (tet10 / tri6, tri6 / line3): the corners
+  // come first. Missing facets are added linear (the order-2 reader takes their mid-edge nodes
+  // from the cells' edges).
   const int cell_type = dim == 3 ? 4 : 2, facet_type = dim == 3 ? 2 : 1;
+  const int cell_type2 = dim == 3 ? 11 : 9, facet_type2 = dim == 3 ? 9 : 8;
   const int npf = dim;  // nodes per facet
   const std::size_t npe = dim + 1;
   static const int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -74,6 +78,14 @@ long add_missing_facets(int dim) {
       b.entity = ent;
       std::vector<std::size_t> tags;
       gmsh::model::mesh::getElementsByType(cell_type, tags, b.nodes, ent);
+      {
+        std::vector<std::size_t> tags2, nodes2;
+        gmsh::model::mesh::getElementsByType(cell_type2, tags2, nodes2, ent);
+        const std::size_t nn = nodes2.size() / std::max<std::size_t>(tags2.size(), 1);
+        for (std::size_t e = 0; e < tags2.size(); ++e)
+          b.nodes.insert(b.nodes.end(), &nodes2[nn * e], &nodes2[nn * e] + npe);
+        tags.insert(tags.end(), tags2.begin(), tags2.end());
+      }
       if (tags.empty()) continue;
       for (std::size_t n : b.nodes) max_node = std::max(max_node, n);
       first_cell.push_back(nb_cells);
@@ -126,12 +138,13 @@ long add_missing_facets(int dim) {
     gmsh::model::mesh::getElements(types, etags, enodes, -1, -1);
     for (std::size_t k = 0; k < types.size(); ++k) {
       for (std::size_t t : etags[k]) max_tag = std::max(max_tag, t);
-      if (types[k] != facet_type) continue;
+      if (types[k] != facet_type && types[k] != facet_type2) continue;
+      const std::size_t nn = enodes[k].size() / std::max<std::size_t>(etags[k].size(), 1);
       for (std::size_t e = 0; e < etags[k].size(); ++e) {
         std::uint32_t key[3] = {0, 0, 0};
         bool known = true;
         for (int j = 0; j < npf; ++j) {
-          key[j] = ids.find(enodes[k][npf * e + j]);
+          key[j] = ids.find(enodes[k][nn * e + j]);
           known &= key[j] != DenseIds::kNone;
         }
         if (!known) continue;

@@ -13,9 +13,7 @@
 #include "core/util/error.h"
 
 namespace cvtmesh {
-namespace {
 
-// Connected components of the triangles (through shared edges): component id per triangle.
 std::vector<int> shells_of(const SurfaceMesh& s, int& nb_shells) {
   const int nf = static_cast<int>(s.tris.size() / 3);
   std::vector<int> parent(nf);
@@ -38,6 +36,8 @@ std::vector<int> shells_of(const SurfaceMesh& s, int& nb_shells) {
   nb_shells = static_cast<int>(id.size());
   return shell;
 }
+
+namespace {
 
 // Winding number of the closed shell `sh` around point p (solid angles, van Oosterom-Strackee).
 double winding(const SurfaceMesh& s, const std::vector<int>& shell, int sh, const double* p) {
@@ -65,6 +65,75 @@ double winding(const SurfaceMesh& s, const std::vector<int>& shell, int sh, cons
 
 }  // namespace
 
+bool surface_closes_up(const SurfaceMesh& s) {
+  std::unordered_map<EdgeKey, int, EdgeKeyHash> count;
+  for (std::size_t f = 0; f < s.tris.size() / 3; ++f)
+    for (int k = 0; k < 3; ++k) ++count[edge_key(s.tris[3 * f + k], s.tris[3 * f + (k + 1) % 3])];
+  for (const auto& [e, c] : count)
+    if (c % 2) return false;
+  return !count.empty();
+}
+
+void orient_shells(SurfaceMesh& s) {
+  const std::size_t nf = s.tris.size() / 3;
+  std::unordered_map<EdgeKey, std::vector<int>, EdgeKeyHash> faces_of;
+  for (std::size_t f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      faces_of[edge_key(s.tris[3 * f + k], s.tris[3 * f + (k + 1) % 3])].push_back(
+          static_cast<int>(f));
+  auto runs = [&](int f, int a, int b) {  // does triangle f run a -> b?
+    for (int k = 0; k < 3; ++k)
+      if (s.tris[3 * f + k] == a && s.tris[3 * f + (k + 1) % 3] == b) return true;
+    return false;
+  };
+  std::vector<char> seen(nf, 0);
+  std::vector<int> queue;
+  for (std::size_t start = 0; start < nf; ++start) {
+    if (seen[start]) continue;
+    seen[start] = 1;
+    queue.assign(1, static_cast<int>(start));
+    while (!queue.empty()) {
+      const int f = queue.back();
+      queue.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int a = s.tris[3 * f + k], b = s.tris[3 * f + (k + 1) % 3];
+        for (int g : faces_of[edge_key(a, b)]) {
+          if (seen[g]) continue;
+          seen[g] = 1;
+          if (runs(g, a, b)) std::swap(s.tris[3 * g + 1], s.tris[3 * g + 2]);
+          queue.push_back(g);
+        }
+      }
+    }
+  }
+}
+
+void nest_shells(const SurfaceMesh& surface, const std::vector<int>& shell, int nb,
+                 std::vector<int>& depth, std::vector<int>& parent) {
+  depth.assign(nb, 0);
+  parent.assign(nb, -1);
+  std::vector<const double*> probe(nb, nullptr);
+  for (std::size_t f = 0; f < shell.size(); ++f)
+    if (!probe[shell[f]]) probe[shell[f]] = &surface.xyz[3 * surface.tris[3 * f]];
+  for (int a = 0; a < nb; ++a)
+    for (int b = 0; b < nb; ++b)
+      if (a != b && std::fabs(winding(surface, shell, b, probe[a])) > 0.5) ++depth[a];
+  for (int a = 0; a < nb; ++a)  // the innermost shell containing a: depth one less
+    for (int b = 0; b < nb; ++b)
+      if (a != b && depth[b] == depth[a] - 1 &&
+          std::fabs(winding(surface, shell, b, probe[a])) > 0.5)
+        parent[a] = b;
+}
+
+void generate_volumes(const ReadOptions& options) {
+  gmsh::option::setNumber("General.NumThreads", 1);
+  if (!options.gmsh_optimize) gmsh::option::setNumber("Mesh.Optimize", 0);
+  if (options.mesh_size_factor > 0)
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
+  gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
+  gmsh::model::mesh::generate(3);
+}
+
 MeshData tetrahedralize_surface(const SurfaceMesh& surface, const std::string& what,
                                 const ReadOptions& options) {
   if (surface.tris.empty()) throw InputError(what + " contains no triangles");
@@ -79,18 +148,8 @@ MeshData tetrahedralize_surface(const SurfaceMesh& surface, const std::string& w
       // others is a cavity of the innermost shell around it; the others bound a volume each.
       int nb = 0;
       const std::vector<int> shell = shells_of(surface, nb);
-      std::vector<int> depth(nb, 0), parent(nb, -1);
-      std::vector<const double*> probe(nb, nullptr);
-      for (std::size_t f = 0; f < shell.size(); ++f)
-        if (!probe[shell[f]]) probe[shell[f]] = &surface.xyz[3 * surface.tris[3 * f]];
-      for (int a = 0; a < nb; ++a)
-        for (int b = 0; b < nb; ++b)
-          if (a != b && std::fabs(winding(surface, shell, b, probe[a])) > 0.5) ++depth[a];
-      for (int a = 0; a < nb; ++a)  // the innermost shell containing a: depth one less
-        for (int b = 0; b < nb; ++b)
-          if (a != b && depth[b] == depth[a] - 1 &&
-              std::fabs(winding(surface, shell, b, probe[a])) > 0.5)
-            parent[a] = b;
+      std::vector<int> depth, parent;
+      nest_shells(surface, shell, nb, depth, parent);
       for (int sh = 0; sh < nb; ++sh) gmsh::model::addDiscreteEntity(2, sh + 1);
       const std::size_t nv = surface.xyz.size() / 3;
       std::vector<int> node_shell(nv, 0);
@@ -122,12 +181,7 @@ MeshData tetrahedralize_surface(const SurfaceMesh& surface, const std::string& w
         gmsh::model::geo::addVolume(loops, ++volume);
       }
       gmsh::model::geo::synchronize();
-      gmsh::option::setNumber("General.NumThreads", 1);
-      if (!options.gmsh_optimize) gmsh::option::setNumber("Mesh.Optimize", 0);
-      if (options.mesh_size_factor > 0)
-        gmsh::option::setNumber("Mesh.MeshSizeFactor", options.mesh_size_factor);
-      gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
-      gmsh::model::mesh::generate(3);
+      generate_volumes(options);
     });
     data = mesh_from_gmsh(3, what);
   } catch (...) {

@@ -10,6 +10,7 @@
 
 #include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
+#include "core/io/surface_io.h"
 #include "core/io/text_reader.h"
 #include "core/util/error.h"
 
@@ -192,10 +193,9 @@ MeshData read_medit(const std::string& path) {
       // A triangle mesh in space: accepted as 2D if it lies in a plane z = const.
       const ZRange zr = z_range(xyz, &tris);  // out-of-range ids are reported by finish_mesh
       const double zmin = zr.zmin;
-      if (!zr.planar)
-        throw InputError(what +
-                         " has no tetrahedra and its triangles are not in a plane z = const "
-                         "(a surface mesh cannot be optimized as 2D or 3D)");
+      if (!zr.planar) {
+        throw_surface_only(what, xyz, tris);
+      }
       m.z0 = zmin;
       for (long long v = 0; v < nv; ++v) m.xy.insert(m.xy.end(), {xyz[3 * v], xyz[3 * v + 1]});
     } else {

@@ -22,6 +22,7 @@
 #include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
+#include "core/io/gmsh_mesh_volumes.h"
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
@@ -100,8 +101,26 @@ bool is_surface_format(const std::string& ext) {
 
 // Mesh files Gmsh reads (the others it opens are models: .geo, .step, .brep, ...).
 bool is_gmsh_mesh_format(const std::string& ext) {
-  return ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" || ext == ".inp" ||
-         ext == ".bdf" || ext == ".med";
+  return ext == ".msh" || ext == ".mesh" || ext == ".vtk" || ext == ".unv" || ext == ".bdf" ||
+         ext == ".nas" || ext == ".ply2";
+}
+
+// Formats Gmsh 4.8 writes and Debian's cannot read: it would parse them as a .geo script (a
+// syntax error on line 1) or, for Diffpack, crash in its reader.
+const char* write_only_format(const std::string& ext) {
+  static const std::pair<const char*, const char*> kFormats[] = {
+      {".inp", "Abaqus"},
+      {".su2", "SU2"},
+      {".neu", "Gambit neutral"},
+      {".wrl", "VRML"},
+      {".x3d", "X3D"},
+      {".diff", "Diffpack"},
+      {".med", "MED (Debian's Gmsh is built without MED)"},
+      {".celum", "CELUM"},
+      {".tochnog", "Tochnog"}};
+  for (const auto& [e, name] : kFormats)
+    if (ext == e) return name;
+  return nullptr;
 }
 
 // A surface file: tetrahedralized by Gmsh (3D), or a planar triangle mesh read as 2D (--dim 2).
@@ -137,7 +156,18 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   check_readable(path);
   const std::string ext = file_extension(path);
   if (const auto* reader = find_reader(ext)) {
-    MeshData d = (*reader)(path);
+    MeshData d;
+    try {
+      d = (*reader)(path);
+    } catch (SurfaceOnlyInput& e) {
+      // Triangles in space, no tetrahedra: a closed surface's inside is meshed, as for an .stl.
+      if (options.dim == 2 || !surface_closes_up(e.surface)) throw;
+      orient_shells(e.surface);
+      d = tetrahedralize_surface(e.surface, "'" + path + "'", options);
+      d.model().read_notes.push_back("'" + path +
+                                     "' holds a closed surface and no tetrahedra: the volume "
+                                     "inside it meshed by Gmsh, the surface mesh kept");
+    }
     if (options.dim > 0 && d.dim != options.dim)
       throw InputError("'" + path + "' holds a " + std::to_string(d.dim) + "D mesh, not a " +
                        std::to_string(options.dim) + "D one (--dim " + std::to_string(options.dim) +
@@ -145,6 +175,11 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     d.model().source = path;
     return d;
   }
+  if (const char* format = write_only_format(ext))
+    throw InputError("cannot read '" + path + "': " + format +
+                     " files are written by Gmsh, not read by it or by cvtmesh; convert it to "
+                     ".msh first (meshio reads Abaqus .inp, SU2 and MED: meshio convert IN "
+                     "OUT.msh)");
   if (is_surface_format(ext)) {
     MeshData d = read_surface_file(path, options);
     d.model().source = path;
@@ -213,6 +248,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
           throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) + ")");
   });
   ElementOrigin origin = ElementOrigin::kModel;
+  std::vector<std::string> read_notes;
   std::vector<std::array<int, 3>> file_blocks;
   try {
     gmsh_checked("cannot mesh '" + path + "'", [&] {
@@ -250,6 +286,16 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
           for (int type : types) file_blocks.push_back({d, t, type});
         }
         std::sort(file_blocks.begin(), file_blocks.end());
+        // A surface mesh of volumes without tetrahedra (gmsh -2 -save_all, a closed surface in a
+        // mesh format): the volumes are meshed, the file's blocks written back with them.
+        if (options.dim != 2 && is_surface_mesh_of_volumes()) {
+          const std::vector<int> volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
+          for (int v : volumes) file_blocks.push_back({3, v, 4});
+          std::sort(file_blocks.begin(), file_blocks.end());
+          read_notes.push_back(
+              "'" + path + "' holds surfaces and no tetrahedra: " + std::to_string(volumes.size()) +
+              " volume(s) inside them meshed by Gmsh, the surface mesh kept");
+        }
         // A .msh saved with physical groups may lack the boundary elements of other surfaces.
         int want = options.dim;
         if (want < 0) want = has_elements(3) ? 3 : 2;
@@ -267,6 +313,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   if (ext == ".msh" && data.model().periodic.empty() && read_msh_format(path).version < 3)
     data.model().periodic = read_msh2_periodic(path);
   data.model().origin = origin;
+  data.model().read_notes = std::move(read_notes);
   // An order-2 file's blocks are written back as order 2 from their linear counterparts.
   if (data.model().high_order.order == 2) {
     for (auto& b : file_blocks) b[2] = b[2] == 8 ? 1 : b[2] == 9 ? 2 : b[2] == 11 ? 4 : b[2];

@@ -58,6 +58,33 @@ class OpenMeshMessages {
 
 }  // namespace
 
+SurfaceMesh used_surface(const std::vector<double>& xyz, const std::vector<int>& tris) {
+  SurfaceMesh s;
+  std::vector<int> id(xyz.size() / 3, -1);
+  for (int v : tris) {
+    if (id[v] < 0) {
+      id[v] = static_cast<int>(s.xyz.size() / 3);
+      s.xyz.insert(s.xyz.end(), &xyz[3 * v], &xyz[3 * v] + 3);
+    }
+    s.tris.push_back(id[v]);
+  }
+  return s;
+}
+
+void throw_surface_only(const std::string& what, const std::vector<double>& xyz,
+                        const std::vector<int>& tris) {
+  const long long nv = static_cast<long long>(xyz.size() / 3);
+  for (int v : tris)
+    if (v < 0 || v >= nv)
+      throw InputError(what + ": a triangle refers to vertex " + std::to_string(v + 1) +
+                       ", which does not exist (" + std::to_string(nv) + " vertices)");
+  throw SurfaceOnlyInput(what +
+                             " has no tetrahedra and its triangles are not in a plane z = const "
+                             "(a surface mesh that bounds no volume cannot be optimized as 2D or "
+                             "3D)",
+                         used_surface(xyz, tris));
+}
+
 SurfaceMesh boundary_surface(const MeshData& data) {
   SurfaceMesh s;
   std::vector<int> faces;

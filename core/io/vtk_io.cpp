@@ -17,6 +17,7 @@
 
 #include "core/geometry/z_range.h"
 #include "core/io/finish_mesh.h"
+#include "core/io/surface_io.h"
 #include "core/io/text_reader.h"
 #include "core/util/error.h"
 
@@ -232,10 +233,9 @@ MeshData grid_to_mesh(const Grid& g, const std::string& path, std::vector<Elemen
   } else {
     const ZRange zr = z_range(g.xyz, &cells);
     const double zmin = zr.zmin;
-    if (!zr.planar)
-      throw InputError(what +
-                       " has no tetrahedra and its triangles are not in a plane z = const "
-                       "(a surface mesh cannot be optimized as 2D or 3D)");
+    if (!zr.planar) {
+      throw_surface_only(what, g.xyz, cells);
+    }
     TriMesh2& m = data.tri;
     m.z0 = zmin;
     for (long long v = 0; v < nv; ++v) m.xy.insert(m.xy.end(), {g.xyz[3 * v], g.xyz[3 * v + 1]});

@@ -68,6 +68,9 @@ struct ModelInfo {
   std::vector<std::array<int, 3>> file_blocks;
   // An order-2 input: its mid-edge nodes (order 1 otherwise).
   MidEdgeNodes high_order;
+  // What the reader did beyond reading (e.g. meshed the volumes of a surface-only file): one line
+  // each, for the front ends to print as notes.
+  std::vector<std::string> read_notes;
 };
 
 }  // namespace cvtmesh

@@ -189,6 +189,39 @@ TEST(Order2, OccBallMidEdgeBoundaryNodesOnTheSphere) {
   }
 }
 
+// Gmsh's tutorials t2 and t5 at `-order 2`: a physical volume and no physical surface, so the
+// file holds tet10s and no tri6 on their boundary or interface; the reader adds the missing
+// facets (their mid-edge nodes are the tets'), as it does for a linear file.
+TEST(Order2, PhysicalVolumesOnlyTwoRegionsReadCheckedAndOptimized) {
+  const std::string dir = testing::temp_dir();
+  const std::string geo = write_geo(
+      dir, "two.geo",
+      "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {1, 0, 0, 1, 1, 1};\n"
+      "BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; }\n"
+      "Physical Volume(\"left\", 1) = {1};\nPhysical Volume(\"right\", 2) = {2};\n"
+      "Mesh.MeshSizeMax = 0.3;\nMesh.ElementOrder = 2;\n");
+  const std::string msh = dir + "/two2.msh";
+  std::string log;
+  ASSERT_EQ(run("gmsh -v 0 -3 " + geo + " -o " + msh, &log), 0) << log;
+  const GmshDump in = gmsh_dump(msh);
+  ASSERT_EQ(types_of(in).count(9), 0u) << "the file holds tri6: not the case under test";
+  const MeshData d = read_mesh(msh);
+  EXPECT_EQ(d.model().high_order.order, 2);
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+  EXPECT_EQ(run(testing::cli_path() + " check " + msh, &log), 0) << log;
+  const std::string out = dir + "/two_opt.msh";
+  ASSERT_EQ(run(testing::cli_path() + " optimize " + msh + " -o " + out, &log), 0) << log;
+  EXPECT_EQ(run(testing::cli_path() + " check " + out, &log), 0) << log;
+  const GmshDump o = gmsh_dump(out);
+  // The file's blocks and groups, nothing added: tet10 only (no linear element, no tri6).
+  std::set<int> tin, tout;
+  for (const auto& [t, n] : types_of(in)) tin.insert(t);
+  for (const auto& [t, n] : types_of(o)) tout.insert(t);
+  EXPECT_EQ(tin, tout);
+  EXPECT_EQ(in.groups, o.groups);
+  EXPECT_EQ(nb_not_positive(o), 0);
+}
+
 TEST(Order2, CheckReportsAnInvertedTet10) {
   const std::string dir = testing::temp_dir();
   const std::string msh = order2_box_msh(dir);
