@@ -14,6 +14,8 @@
 #include "core/io/gmsh_cad_boundary.h"
 #include "core/io/gmsh_mid_edge_projector.h"
 #include "core/io/place_mid_edge_nodes.h"
+#include "core/io/read_mesh.h"
+#include "core/mesh/transfer_views.h"
 #include "core/io/gmsh_session.h"
 #include "core/distributed/optimize_partitioned.h"
 #include "core/pipeline/option_schema.h"
@@ -156,6 +158,11 @@ void register_optimize(CLI::App& app) {
              throw InputError(
                  "optimize --parts: --report and --format json are not available "
                  "for the partitioned optimization");
+           if (writer && !d.model().views.empty()) {
+             info() << "cvtmesh: note: the input's views are not carried through the "
+                       "partitioned optimization: not written\n";
+             d.model().views.clear();
+           }
            run_partitioned(d, *opt, *partition, *ranks, in->path);
            if (writer && d.model().high_order.order == 2) {
              MidEdgePlacement& p = d.model().high_order.placed;
@@ -177,7 +184,26 @@ void register_optimize(CLI::App& app) {
          // left kept for writing).
          if (const double left = seconds_left(); std::isfinite(left))
            opt->time_budget = std::max(0.0, 0.8 * left);
+         // The input's views ($NodeData, $ElementData) stay out of the pipeline's copies; they
+         // are carried onto the result afterwards.
+         MeshData input_mesh;
+         if (!d.model().views.empty()) {
+           input_mesh = d;
+           d.model().views.clear();
+         }
          OptimizeResult r = optimize(d, *opt);
+         if (input_mesh.dim && !input_mesh.model().views.empty()) {
+           d.model().views = transfer_views(input_mesh, d);
+           input_mesh = MeshData{};
+           r.notes.push_back(
+               std::to_string(d.model().views.size()) +
+               " view(s) of the input carried onto the optimized mesh (node values "
+               "interpolated linearly, element values from the input's element "
+               "holding the centroid)" +
+               (file_extension(out->path) == ".msh"
+                    ? std::string()
+                    : "; only a .msh output holds them: not written to " + out->path));
+         }
          // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.
          if (d.dim == 3 && d.model().high_order.order == 2) {
            MidEdgePlacement& p = d.model().high_order.placed;

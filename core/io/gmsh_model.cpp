@@ -584,6 +584,7 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
     for (std::size_t t : info.high_order.tags) floor = std::max(floor, t);
   }
   const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv, floor);
+  w.node_tags = ntags;
   // Mid-edge node tags: the input's where the edge is the input's, fresh ones above every other.
   std::vector<std::size_t> mid_tags(mid.tags.size());
   if (order2) {

@@ -23,7 +23,8 @@ void complete_model_info(MeshData& data);
 // Element tags that mesh_to_gmsh gave to the live simplices (tets in 3D, triangles in 2D), in
 // element order — the keys of $ElementData.
 struct GmshWritten {
-  std::vector<std::size_t> element_tags;
+  std::vector<std::size_t> element_tags;  // per live simplex of the mesh dimension, in order
+  std::vector<std::size_t> node_tags;     // per vertex
 };
 
 // Creates (and makes current) a new Gmsh model `model_name` holding data: entities, nodes with

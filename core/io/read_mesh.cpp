@@ -27,6 +27,7 @@
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/gmsh_surface.h"
+#include "core/io/gmsh_views.h"
 #include "core/io/surface_io.h"
 #include "core/io/write_mesh.h"
 #include "core/util/error.h"
@@ -225,6 +226,17 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
       if (!dir.empty()) rmdir(dir.c_str());
     }
   } remove_wrapper{wrapper_dir, wrapper};
+  std::vector<int> views_before;
+  gmsh::view::getTags(views_before);
+  // The views the file brought ($NodeData, $ElementData): read into the mesh, then removed.
+  auto new_views = [&] {
+    std::vector<int> views, fresh;
+    gmsh::view::getTags(views);
+    for (int v : views)
+      if (std::find(views_before.begin(), views_before.end(), v) == views_before.end())
+        fresh.push_back(v);
+    return fresh;
+  };
   gmsh_checked("cannot read '" + path + "'", [&] {
     gmsh::option::setNumber("General.NumThreads", 1);
     std::vector<std::string> log_before, log;
@@ -303,7 +315,15 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
       }
     });
     data = mesh_from_gmsh(options.dim, "'" + path + "'");
+    const std::vector<int> fresh = new_views();
+    if (!fresh.empty()) {
+      gmsh_checked("cannot read the views of '" + path + "'", [&] {
+        data.model().views = read_gmsh_views(fresh, data, "'" + path + "'", read_notes);
+      });
+      for (int v : fresh) gmsh::view::remove(v);
+    }
   } catch (...) {
+    for (int v : new_views()) gmsh::view::remove(v);
     gmsh::model::remove();
     if (!session.owns()) gmsh::model::setCurrent(previous);
     throw;

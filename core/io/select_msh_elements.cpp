@@ -143,6 +143,28 @@ std::size_t number_in_file_order(MeshData& data) {
   return next;
 }
 
+bool number_nodes_in_file_order(MeshData& data) {
+  const bool three = data.dim == 3;
+  const std::vector<VertexClass>& vc = three ? data.tet.vclass : data.tri.vclass;
+  std::vector<std::size_t>& tags = three ? data.tet.node_tags : data.tri.node_tags;
+  const std::size_t nv = three ? data.tet.xyz.size() / 3 : data.tri.xy.size() / 2;
+  std::vector<std::size_t> order(nv);
+  for (std::size_t v = 0; v < nv; ++v) order[v] = v;
+  auto key = [&](std::size_t v) {
+    return v < vc.size() ? std::make_pair(static_cast<int>(vc[v].dim), vc[v].entity)
+                         : std::make_pair(three ? 3 : 2, 0);
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  bool in_order = tags.size() == nv;
+  for (std::size_t k = 0; k < nv && in_order; ++k) in_order = tags[order[k]] == k + 1;
+  if (in_order) return true;
+  if (data.model().high_order.order == 2 || !data.model().periodic.empty()) return false;
+  tags.assign(nv, 0);
+  for (std::size_t k = 0; k < nv; ++k) tags[order[k]] = k + 1;
+  return true;
+}
+
 std::vector<ElementField> fields_on_all_elements(const MshSelection& numbered,
                                                  const std::vector<ElementField>& fields,
                                                  std::size_t nb_elements) {

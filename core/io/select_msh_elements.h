@@ -33,6 +33,12 @@ MshSelection select_msh_elements(const MeshData& data, bool save_all);
 // cells (hybrid meshes) get no tag. Returns N.
 std::size_t number_in_file_order(MeshData& data);
 
+// Node tags 1..N in the order Gmsh writes the vertices (by entity dimension and tag, then vertex
+// order), for per-node data read back by position (meshio) as by tag (Gmsh). Kept when already
+// so, and for order-2 meshes and meshes with periodic links (whose node tags are kept: Gmsh reads
+// the data by tag). Returns true if the tags are in file order afterwards.
+bool number_nodes_in_file_order(MeshData& data);
+
 // The fields (one value per live simplex of data.dim, element order) spread over every written
 // element, by tag 1..N after number_in_file_order: NaN for the elements that are not simplices
 // of the mesh dimension (points, lines, boundary facets, kept cells).

@@ -16,6 +16,7 @@
 
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
+#include "core/io/gmsh_views.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/quality_view_geo.h"
 #include "core/io/read_mesh.h"
@@ -33,6 +34,16 @@ bool gmsh_writes(const std::string& ext) {
   for (const char* e : k)
     if (ext == e) return true;
   return false;
+}
+
+// The views of data's model that belong to its mesh as it is (DataView::fingerprint).
+std::vector<DataView> views_of(const MeshData& data) {
+  std::vector<DataView> out;
+  if (data.model().views.empty()) return out;
+  const std::uint64_t f = mesh_fingerprint(data);
+  for (const DataView& v : data.model().views)
+    if (v.fingerprint == f) out.push_back(v);
+  return out;
 }
 
 void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::string& target,
@@ -55,6 +66,7 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
     bool save_all = true;
     std::vector<ElementField> fields;
     std::vector<std::size_t> field_tags;
+    std::size_t nb_elements = 0;  // with views: every element tagged 1..N in file order
     if (msh) {
       selection = select_msh_elements(data, o.save_all);
       save_all = selection.save_all;
@@ -63,14 +75,38 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
                           "' as MSH 2.2: some of its elements are in no physical group, and MSH "
                           "2.2 stores groups only as the tags of elements that have one; write "
                           "MSH 4.1 (--msh-version 4.1) or put those entities in a physical group");
+      // Per-node and per-element data are read back by position (meshio) as by tag (Gmsh).
+      if (!views_of(data).empty()) {
+        nb_elements = number_in_file_order(selection.data);
+        number_nodes_in_file_order(selection.data);
+      }
       if (!o.fields.empty()) {
         const std::size_t n = number_in_file_order(selection.data);
         fields = fields_on_all_elements(selection, o.fields, n);
         for (std::size_t t = 1; t <= n; ++t) field_tags.push_back(t);
       }
     }
-    mesh_to_gmsh(msh ? selection.data : data, "cvtmesh_output");
+    const GmshWritten written = mesh_to_gmsh(msh ? selection.data : data, "cvtmesh_output");
     made = true;
+    // The input's views that belong to this mesh: node tags per vertex, element tags per live
+    // simplex of `data` (the selection's cells map back to them by field_index).
+    const std::vector<DataView> data_views = msh ? views_of(data) : std::vector<DataView>{};
+    std::vector<std::size_t> cell_tags;
+    if (!data_views.empty()) {
+      cell_tags.assign(nb_live_cells(data), 0);
+      const std::vector<int>& cells =
+          data.dim == 3 ? selection.data.tet.tets : selection.data.tri.tris;
+      const std::size_t npe = data.dim + 1;
+      std::size_t k = 0;
+      for (std::size_t c = 0; c * npe < cells.size(); ++c) {
+        if (cells[npe * c] < 0) continue;
+        const long i = c < selection.field_index.size() ? selection.field_index[c] : -1;
+        if (i >= 0 && static_cast<std::size_t>(i) < cell_tags.size() &&
+            k < written.element_tags.size())
+          cell_tags[i] = written.element_tags[k];
+        ++k;
+      }
+    }
     gmsh_checked("cannot write '" + target + "'", [&] {
       gmsh::option::setNumber("Mesh.MshFileVersion", o.msh_version);
       gmsh::option::setNumber("Mesh.Binary", o.binary ? 1 : 0);
@@ -78,8 +114,11 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
       gmsh::option::setNumber("Mesh.SaveParametric", 0);
       gmsh::write(tmp);
       if (msh) append_msh_periodic(tmp, data.model().periodic, o.msh_version, o.binary);
-      if (msh && !fields.empty()) {
-        views = add_element_views(fields, field_tags);
+      if (msh && (!fields.empty() || !data_views.empty())) {
+        // Quality fields first (the .opt shows View[0]), then the input's views.
+        if (!fields.empty()) views = add_element_views(fields, field_tags);
+        for (int v : add_data_views(data_views, written.node_tags, cell_tags, nb_elements))
+          views.push_back(v);
         gmsh::option::setNumber("PostProcessing.SaveMesh", 0);
         gmsh::option::setNumber("PostProcessing.SaveInterpolationMatrices", 0);
         for (int v : views) gmsh::view::write(v, tmp, true);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh/data_views.h"
 #include "core/mesh/mid_edge_nodes.h"
 
 namespace cvtmesh {
@@ -71,6 +72,9 @@ struct ModelInfo {
   // What the reader did beyond reading (e.g. meshed the volumes of a surface-only file): one line
   // each, for the front ends to print as notes.
   std::vector<std::string> read_notes;
+  // The file's post-processing views ($NodeData / $ElementData), each for the mesh it was read or
+  // carried onto (DataView::fingerprint).
+  std::vector<DataView> views;
 };
 
 }  // namespace cvtmesh

@@ -256,5 +256,111 @@ p = subprocess.run([CLI, "convert", cs, os.path.join(tmp, "q.node"), "--quality"
 check(p.returncode != 0 and "meshio" in p.stderr and not os.path.exists(os.path.join(tmp, "q.ele")),
       f".node --quality refused: {p.returncode} {p.stderr}")
 
+# ---- Input views ($NodeData / $ElementData): carried onto the optimized mesh ------------------
+# A box meshed by Gmsh with a vector node field (affine: interpolated exactly) over two time
+# steps and an element field (the element centroid's x), saved with the mesh as Gmsh users do
+# (gmsh.view.write). optimize carries them onto its mesh; Gmsh reads them by tag, meshio by
+# position; convert keeps them as they are.
+def affine(p):
+    return [1.5 * p[0] - 2 * p[1] + 3, p[2] - 0.5 * p[0], 2.0]
+
+
+views_in = os.path.join(tmp, "views.msh")
+gmsh.initialize(["gmsh", "-nopopup"])
+gmsh.option.setNumber("General.Terminal", 0)
+try:
+    gmsh.model.add("views")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 1, 0.5)
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 0.2)
+    gmsh.model.mesh.generate(3)
+    ntags, xyz, _ = gmsh.model.mesh.getNodes()
+    nv = gmsh.view.add("velocity")
+    for step, scale in enumerate((1.0, 2.0)):
+        gmsh.view.addModelData(nv, step, "views", "NodeData", ntags,
+                               [[scale * x for x in affine(xyz[3 * i:3 * i + 3])]
+                                for i in range(len(ntags))], time=0.5 * step, numComponents=3)
+    etags, enodes = gmsh.model.mesh.getElementsByType(4)
+    nodes_xyz = {t: xyz[3 * i:3 * i + 3] for i, t in enumerate(ntags)}
+    ev = gmsh.view.add("cell_x")
+    gmsh.view.addModelData(ev, 0, "views", "ElementData", etags,
+                           [[sum(nodes_xyz[n][0] for n in enodes[4 * e:4 * e + 4]) / 4]
+                            for e in range(len(etags))])
+    gmsh.view.write(nv, views_in)
+    gmsh.option.setNumber("PostProcessing.SaveMesh", 0)
+    gmsh.view.write(ev, views_in, append=True)
+finally:
+    gmsh.finalize()
+
+
+def gmsh_views(path):
+    """name -> (kind, [(time, {tag: values})]) and node coordinates, as Gmsh reads them."""
+    gmsh.initialize(["gmsh", "-nopopup"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        gmsh.open(path)
+        out = {}
+        for t in gmsh.view.getTags():
+            i = gmsh.view.getIndex(t)
+            name = gmsh.option.getString(f"View[{i}].Name")
+            steps = []
+            for s in range(int(gmsh.option.getNumber(f"View[{i}].NbTimeStep"))):
+                kind, tags, data, time, _ = gmsh.view.getModelData(t, s)
+                steps.append((time, dict(zip(tags, [list(d) for d in data]))))
+            out[name] = (kind, steps)
+        ntags, xyz, _ = gmsh.model.mesh.getNodes()
+        coords = {t: xyz[3 * i:3 * i + 3] for i, t in enumerate(ntags)}
+        etags, enodes = gmsh.model.mesh.getElementsByType(4)
+        centroid_x = {t: sum(coords[n][0] for n in enodes[4 * e:4 * e + 4]) / 4
+                      for e, t in enumerate(etags)}
+        return out, coords, centroid_x
+    finally:
+        gmsh.finalize()
+
+
+for cmd, out in (("optimize", "views_opt.msh"), ("convert", "views_conv.msh")):
+    out = os.path.join(tmp, out)
+    p = run(cmd, views_in, *(["-o", out] if cmd == "optimize" else [out]))
+    if cmd == "optimize":
+        check("2 view(s) of the input carried" in p.stderr, f"optimize's note: {p.stderr[-400:]}")
+    v, coords, centroid_x = gmsh_views(out)
+    check(sorted(v) == ["cell_x", "velocity"], f"{cmd}: views {sorted(v)}")
+    if "velocity" in v:
+        kind, steps = v["velocity"]
+        check(kind == "NodeData" and [s[0] for s in steps] == [0.0, 0.5],
+              f"{cmd}: velocity is NodeData with times 0, 0.5 ({kind}, {[s[0] for s in steps]})")
+        worst = max(abs(scale * a - b) for scale, (_, d) in zip((1.0, 2.0), steps)
+                    for tag, vals in d.items() for a, b in zip(affine(coords[tag]), vals))
+        check(worst < 1e-9, f"{cmd}: the affine node field interpolated exactly ({worst})")
+        check(len(steps[0][1]) == len(coords), f"{cmd}: a value on every node")
+    if "cell_x" in v:
+        kind, steps = v["cell_x"]
+        vals = {t: d[0] for t, d in steps[0][1].items() if not math.isnan(d[0])}
+        check(kind == "ElementData" and set(vals) == set(centroid_x),
+              f"{cmd}: cell_x on every tet ({kind}, {len(vals)} of {len(centroid_x)})")
+        worst = max((abs(vals[t] - centroid_x[t]) for t in vals if t in centroid_x), default=1)
+        check(worst < (1e-12 if cmd == "convert" else 0.25),
+              f"{cmd}: cell_x is the x of an input tet around the centroid ({worst})")
+    m = read_meshio(out)
+    if "velocity" in m.point_data:
+        pd = m.point_data["velocity"]  # meshio keeps the last step of a name (scale 2)
+        worst = max(abs(2 * a - b) for i, pt in enumerate(m.points)
+                    for a, b in zip(affine(pt), pd[i]))
+        check(worst < 1e-9, f"{cmd}: meshio reads the node field at its points ({worst})")
+    else:
+        check(False, f"{cmd}: meshio point data {list(m.point_data)}")
+    if "cell_x" in m.cell_data:
+        for c, vals in zip(m.cells, m.cell_data["cell_x"]):
+            if c.type != "tetra":
+                continue
+            cx = m.points[c.data].mean(axis=1)[:, 0]
+            worst = max(abs(a - b) for a, b in zip(cx, vals))
+            check(worst < (1e-12 if cmd == "convert" else 0.25),
+                  f"{cmd}: meshio reads cell_x per tet in order ({worst})")
+    else:
+        check(False, f"{cmd}: meshio cell data {list(m.cell_data)}")
+p = run("optimize", views_in, "-o", os.path.join(tmp, "views_opt.vtk"))
+check("not written" in p.stderr, f"a .vtk output says the views are not written: {p.stderr[-300:]}")
+
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
