@@ -17,10 +17,18 @@ void register_check(CLI::App& app) {
   add_input(c, *in);
   commands().push_back(
       {c, [in] {
-         // read_mesh already refuses inverted/flat elements and open meshes with a
-         // clear message; what reaches here is checked again in full.
+         // read_mesh already refuses flat elements, tangled and open meshes with a clear
+         // message; what reaches here is checked again in full.
          const MeshData d = read_mesh(in->path, in->to_read_options());
          MeshCheck r = d.dim == 3 ? check_mesh(d.tet) : check_mesh(d.tri);
+         // Tets the file gives with negative volume: read (turned positive) by every command,
+         // but the file is not valid as it is.
+         if (d.model().nb_reoriented > 0) {
+           r.ok = false;
+           r.problems.push_back(std::to_string(d.model().nb_reoriented) +
+                                " tetrahedra have negative volume (the other vertex order; "
+                                "optimize and convert write them positive)");
+         }
          const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
          // Structure: a self-intersecting boundary is invalid; coincident
          // nodes (parts in contact) are reported as a warning.

@@ -10,6 +10,7 @@
 
 #include "core/geometry/predicates.h"
 #include "core/mesh/build_adjacency.h"
+#include "core/mesh/reorient_tets.h"
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/face_key.h"
 #include "core/util/error.h"
@@ -198,19 +199,15 @@ void finish3(TetMesh& m, ModelInfo& info, const std::string& what) {
   check_ids(m.tets, 4, m.nb_vertices(), what, "tetrahedron");
   check_ids(m.tris, 3, m.nb_vertices(), what, "triangle");
 
-  long bad = 0;
-  int first_bad = -1;
-  for (int t = 0; t < nt; ++t) {
-    const int* v = &m.tets[4 * t];
-    if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0) {
-      if (!bad) first_bad = t;
-      ++bad;
-    }
-  }
-  if (bad)
-    throw InputError(what + ": " + s(bad) +
-                     " tetrahedra are inverted or flat (first: tetrahedron " + s(first_bad + 1) +
-                     ")");
+  // Tets in the other vertex order are turned positive (whether they then form a mesh, the
+  // overlap check below says); flat ones are refused.
+  const Reoriented ro = reorient_tets(m);
+  if (ro.nb_flat)
+    throw InputError(what + ": " + s(ro.nb_flat) +
+                     " tetrahedra are flat (zero volume; first: tetrahedron " +
+                     s(ro.first_flat + 1) + ")");
+  m.model.nb_reoriented = ro.nb_reoriented;
+  if (ro.nb_reoriented) m.model.read_notes.push_back(reoriented_note(what, ro.nb_reoriented, nt));
 
   // Drop unused vertices.
   const std::vector<int> map = used_vertices(m.tets, m.nb_vertices());

@@ -14,6 +14,7 @@
 #include "core/geometry/z_range.h"
 #include "core/geometry/predicates.h"
 #include "core/io/gmsh_session.h"
+#include "core/mesh/reorient_tets.h"
 #include "core/io/place_mid_edge_nodes.h"
 #include "core/io/tag_index.h"
 #include "core/mesh/keep_loose_triangles.h"
@@ -377,25 +378,26 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       m.tri_tags = std::move(facet_tags);
       m.model = std::move(info);
       keep_loose_triangles(m);
-      long bad = 0;
-      int first_bad = m.nb_tets();
-      const int nt = m.nb_tets();
-#pragma omp parallel for schedule(static, 1024) reduction(+ : bad) reduction(min : first_bad) if (nt > 1024)
-      for (int t = 0; t < nt; ++t) {
-        const int* v = &m.tets[4 * static_cast<std::size_t>(t)];
-        if (orient3d(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) <= 0) {
-          first_bad = std::min(first_bad, t);
-          ++bad;
-        }
-      }
-      if (bad)
-        throw InputError(what + ": " + std::to_string(bad) +
-                         " tetrahedra are inverted or flat (first: element " +
-                         std::to_string(m.tet_tags[first_bad]) + ")");
+      // Tets in the other vertex order are turned positive (check_mesh then says whether they
+      // form a mesh: a tangled one overlaps); flat ones are refused.
+      const Reoriented ro = reorient_tets(m);
+      if (ro.nb_flat)
+        throw InputError(what + ": " + std::to_string(ro.nb_flat) +
+                         " tetrahedra are flat (zero volume; first: element " +
+                         std::to_string(m.tet_tags[ro.first_flat]) + ")");
+      m.model.nb_reoriented = ro.nb_reoriented;
+      if (ro.nb_reoriented)
+        m.model.read_notes.push_back(reoriented_note(what, ro.nb_reoriented, m.nb_tets()));
       build_adjacency(m);
       constrain_kept_cell_faces(m);
       const MeshCheck c = check_mesh(m);
-      if (!c.ok) throw InputError(what + ": invalid tetrahedral mesh: " + check_summary(c));
+      if (!c.ok)
+        throw InputError(what + ": invalid tetrahedral mesh: " +
+                         (ro.nb_reoriented ? std::to_string(ro.nb_reoriented) +
+                                                 " tetrahedra had negative volume and, turned "
+                                                 "positive, do not form a mesh: "
+                                           : std::string()) +
+                         check_summary(c));
     } else {
       TriMesh2& m = out.tri;
       const std::size_t n = node_tags.size();

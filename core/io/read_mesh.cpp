@@ -333,7 +333,8 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   if (ext == ".msh" && data.model().periodic.empty() && read_msh_format(path).version < 3)
     data.model().periodic = read_msh2_periodic(path);
   data.model().origin = origin;
-  data.model().read_notes = std::move(read_notes);
+  data.model().read_notes.insert(data.model().read_notes.end(), read_notes.begin(),
+                                 read_notes.end());
   // An order-2 file's blocks are written back as order 2 from their linear counterparts.
   if (data.model().high_order.order == 2) {
     for (auto& b : file_blocks) b[2] = b[2] == 8 ? 1 : b[2] == 9 ? 2 : b[2] == 11 ? 4 : b[2];

@@ -212,7 +212,13 @@ std::vector<BadInputCase> bad_input_corpus() {
       // meshes: tests/robust/robust_inputs_test.cpp), and order-2 tets too (tests/io/
       // order2_test.cpp); a 2D order-2 mesh is still refused.
       one("second_order_2d.msh", second_order_tri(), "order-2"),
-      one("inverted.msh", edit(tet, "1 1 2 3 4\n", "1 2 1 3 4\n"), "inverted"),
+      // A tet with negative volume is read (turned positive, tests/robust/robust_inputs_test.cpp);
+      // one that, turned positive, lies inside its neighbour is a tangled mesh.
+      one("tangled.msh",
+          edit(edit(edit(kTet22, "4\n1 0 0 0", "5\n1 0 0 0"), "4 0 0 1\n$EndNodes",
+                    "4 0 0 1\n5 0.2 0.2 0.2\n$EndNodes"),
+               "1\n1 4 2 1 1 1 2 3 4\n", "2\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 2 1 3 5\n"),
+          "do not form a mesh"),
       one("zero_volume.msh", edit(tet, "0 0 1\n$EndNodes", "1 1 0\n$EndNodes"), "flat"),
       one("nan.msh", edit(tet, "\n1 0 0\n", "\nnan 0 0\n"), "NaN"),
       one("inf.msh", edit(tet, "\n1 0 0\n", "\ninf 0 0\n"), "infinite"),
@@ -252,7 +258,10 @@ std::vector<BadInputCase> bad_input_corpus() {
       one("index.mesh", edit(medit, "1 2 3 4 1", "1 2 3 5 1"), "out of range"),
       one("hexahedra.mesh", edit(medit, "End", "Hexahedra\n1\n1 2 3 4 1 2 3 4 1\nEnd"),
           "'hexahedra'"),
-      one("inverted.mesh", edit(medit, "1 2 3 4 1", "2 1 3 4 1"), "inverted"),
+      one("tangled.mesh",
+          edit(edit(medit, "4\n0 0 0 0", "5\n0 0 0 0"), "0 0 1 0\nTetrahedra\n1\n1 2 3 4 1",
+               "0 0 1 0\n0.2 0.2 0.2 0\nTetrahedra\n2\n1 2 3 4 1\n2 1 3 5 1"),
+          "overlap"),
       // --- TetGen
       {"bad_index.ele",
        {{"bad_index.node", kNode}, {"bad_index.ele", edit(kEle, "1 1 2 3 4", "1 1 2 3 7")}},

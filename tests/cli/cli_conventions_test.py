@@ -96,7 +96,7 @@ check(code == 3 and "--force" in err, f"--no-clobber on an existing file exits 3
 code, _, err = run("convert", QUAD, out("c.msh"), "--no-clobber", "--force")
 check(code == 0, f"--force replaces it, got {code}: {err.strip()}")
 bad = out("inverted.mesh")
-with open(bad, "w") as f:  # one tet with negative volume: refused by the reader (2)
+with open(bad, "w") as f:  # one tet with negative volume: check reports it (5)
     f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n"
             "0 0 1 0\nTetrahedra\n1\n1 3 2 4 1\nEnd\n")
 code, _, err = run("check", bad)

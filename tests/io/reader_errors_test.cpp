@@ -125,9 +125,6 @@ TEST(ReaderErrors, TetGen) {
        "out of range"},
       {"nan_coordinate", replace_once(s.node, "\n2 1 0 0", "\n2 nan 0 0"), s.ele,
        "not a finite number"},
-      {"inverted", s.node,
-       replace_once(s.ele, first_tet, idx + " " + b + " " + a + " " + c + " " + d2 + rest),
-       "inverted", false},
       {"second_order", s.node, replace_once(s.ele, "\n6 4 ", "\n6 10 "), "second-order"},
       {"bad_region", s.node, replace_once(s.ele, first_tet, first_tet + ".5"),
        "not an integer tag"},
@@ -163,6 +160,18 @@ TEST(ReaderErrors, TetGen) {
   spit(dir + "/fold.ele", "2 4 0\n1 1 2 3 4\n2 1 2 3 5\n");
   expect_input_error([&] { read_tetgen(dir + "/fold.node"); }, dir + "/fold.node", "overlap",
                      false);
+  // The same, the second tet given in the other vertex order: turned positive, still a fold.
+  spit(dir + "/fold2.node", "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0.1 0.1 0.5\n");
+  spit(dir + "/fold2.ele", "2 4 0\n1 1 2 3 4\n2 2 1 3 5\n");
+  expect_input_error([&] { read_tetgen(dir + "/fold2.node"); }, dir + "/fold2.node", "overlap",
+                     false);
+  // A tet in the other vertex order inside a valid mesh: read, turned positive.
+  spit(dir + "/inverted.node", s.node);
+  spit(dir + "/inverted.ele",
+       replace_once(s.ele, first_tet, idx + " " + b + " " + a + " " + c + " " + d2 + rest));
+  const MeshData inv = read_tetgen(dir + "/inverted.node");
+  EXPECT_EQ(inv.model().nb_reoriented, 1);
+  EXPECT_TRUE(check_mesh(inv.tet).ok);
 }
 
 TEST(ReaderErrors, Medit) {
@@ -196,7 +205,7 @@ TEST(ReaderErrors, Medit) {
     spit(p, k.text);
     expect_input_error([&] { read_mesh(p); }, p, k.what, k.line);
   }
-  // An inverted tet (swap two vertices of the first one).
+  // A tet in the other vertex order (swap two vertices of the first one).
   std::string t = s.medit;
   const auto at = t.find("Tetrahedra\n6\n") + 13;
   const auto sp1 = t.find(' ', at), sp2 = t.find(' ', sp1 + 1);
@@ -204,7 +213,9 @@ TEST(ReaderErrors, Medit) {
   t.replace(at, sp2 - at, v1 + " " + v0);
   const std::string p = dir + "/inverted.mesh";
   spit(p, t);
-  expect_input_error([&] { read_mesh(p); }, p, "inverted", false);
+  const MeshData inv = read_mesh(p);  // turned positive: the mesh is valid
+  EXPECT_EQ(inv.model().nb_reoriented, 1);
+  EXPECT_TRUE(check_mesh(inv.tet).ok);
 }
 
 TEST(ReaderErrors, Vtk) {
