@@ -396,8 +396,19 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     } else {
       TriMesh2& m = out.tri;
       const std::size_t n = node_tags.size();
-      // Planarity: every node of the 2D mesh at the same z (relative tolerance).
+      // Planarity: every node of the 2D mesh at the same z (relative tolerance), an order-2
+      // mesh's mid-edge nodes too.
       const ZRange zr = z_range(xyz);
+      if (zr.planar && !info.high_order.xyz.empty()) {
+        std::vector<double> all = xyz;
+        all.insert(all.end(), info.high_order.xyz.begin(), info.high_order.xyz.end());
+        if (!z_range(all).planar)
+          throw InputError(what +
+                           ": the mid-edge nodes of the order-2 triangles are not in the plane of "
+                           "their corners (z = " +
+                           std::to_string(zr.zmin) +
+                           "); 2D optimization needs a mesh in a plane z = const");
+      }
       const double zmin = zr.zmin, zmax = zr.zmax;
       // The surfaces that leave the plane of the first one, named in the message.
       std::string off_plane;

@@ -469,7 +469,7 @@ TEST(Order2, PlanarPlacementRules) {
 TEST(Order2, PlanarCheckReportsAnInvertedTri6) {
   const std::string dir = testing::temp_dir();
   const std::string msh = order2_disk_msh(dir);
-  const std::string bad = dir + "/bad.msh";
+  const std::string bad = dir + "/bad.msh", off_plane = dir + "/off_plane.msh";
   {
     // Move one interior mid-edge node of a tri6 past the opposite corner.
     GmshSession session;
@@ -487,13 +487,25 @@ TEST(Order2, PlanarCheckReportsAnInvertedTri6) {
       std::vector<double> c, p, opposite, q;
       gmsh::model::mesh::getNode(nodes[6 * e + 3], c, p);
       gmsh::model::mesh::getNode(nodes[6 * e + 2], opposite, q);
+      const std::vector<double> original = c;
       for (int k = 0; k < 2; ++k) c[k] += 1.5 * (opposite[k] - c[k]);
       gmsh::model::mesh::setNode(nodes[6 * e + 3], c, {});
       moved = true;
+      gmsh::write(bad);
+      // The same node out of the plane instead: refused as not planar.
+      c = original;
+      c[2] += 0.1;
+      gmsh::model::mesh::setNode(nodes[6 * e + 3], c, {});
+      gmsh::write(off_plane);
     }
     ASSERT_TRUE(moved);
-    gmsh::write(bad);
     gmsh::model::remove();
+  }
+  try {
+    read_mesh(off_plane);
+    FAIL() << "a tri6 with a mid-edge node off the plane was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not in the plane"), std::string::npos) << e.what();
   }
   std::string log;
   EXPECT_EQ(run(testing::cli_path() + " check " + msh, &log), 0) << log;
