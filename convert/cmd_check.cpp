@@ -45,16 +45,21 @@ void register_check(CLI::App& app) {
              }
            }
          }
-         // Order 2: every tet10 positive as the file places its nodes.
-         const bool order2 = d.dim == 3 && d.model().high_order.order == 2;
+         // Order 2: every tet10 / tri6 positive as the file places its nodes.
+         const bool order2 = d.model().high_order.order == 2;
          if (order2) {
-           const MidEdgePlacement p = place_mid_edge_nodes(d.tet, {}, false);
-           if (p.nb_invalid) {
-             r.ok = false;
+           const MidEdgePlacement p = d.dim == 3 ? place_mid_edge_nodes(d.tet, {}, false)
+                                                 : place_mid_edge_nodes(d.tri, {}, false);
+           if (p.nb_invalid && d.dim == 3)
              r.problems.push_back(std::to_string(p.nb_invalid) +
                                   " order-2 tetrahedra are not positive with their mid-edge nodes "
                                   "(a straight sub-tet or the Jacobian at a node is not positive)");
-           }
+           if (p.nb_invalid && d.dim == 2)
+             r.problems.push_back(std::to_string(p.nb_invalid) +
+                                  " order-2 triangles are not positive with their mid-edge nodes "
+                                  "(a straight sub-triangle or the Jacobian somewhere on the "
+                                  "triangle is not positive)");
+           r.ok &= p.nb_invalid == 0;
          }
          if (r.ok) {
            std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "") << n

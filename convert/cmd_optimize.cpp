@@ -165,9 +165,8 @@ void register_optimize(CLI::App& app) {
            }
            run_partitioned(d, *opt, *partition, *ranks, in->path);
            if (writer && d.model().high_order.order == 2) {
-             MidEdgePlacement& p = d.model().high_order.placed;
-             p = place_mid_edge_nodes(d.tet,
-                                      cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
+             const MidEdgePlacement& p =
+                 place_mid_edge_nodes(d, cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
              info() << "cvtmesh: note: " << mid_edge_summary(p) << "\n";
            }
            cad.reset();
@@ -205,10 +204,9 @@ void register_optimize(CLI::App& app) {
                     : "; only a .msh output holds them: not written to " + out->path));
          }
          // Order 2: the mid-edge nodes of the optimized corner mesh, on the CAD where there is one.
-         if (d.dim == 3 && d.model().high_order.order == 2) {
-           MidEdgePlacement& p = d.model().high_order.placed;
-           p = place_mid_edge_nodes(d.tet,
-                                    cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
+         if (d.model().high_order.order == 2) {
+           const MidEdgePlacement& p =
+               place_mid_edge_nodes(d, cad ? gmsh_cad_mid_edge_projector() : MidEdgeProjector{});
            r.notes.push_back(mid_edge_summary(p));
          }
          cad.reset();  // the writer starts from a clean Gmsh

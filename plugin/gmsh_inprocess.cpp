@@ -173,10 +173,9 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& given) {
       data.dim == 3 ? fe_measures(data.tet, o.fe) : fe_measures(data.tri, o.fe);
   OptimizeResult r = optimize(data, o.optimize);
   // Order 2: the mid-edge nodes of the optimized corner mesh, on the model's CAD where it has one.
-  if (data.dim == 3 && data.model().high_order.order == 2) {
+  if (data.model().high_order.order == 2) {
     GmshSession session;
-    data.model().high_order.placed = place_mid_edge_nodes(data.tet, gmsh_cad_mid_edge_projector());
-    r.notes.push_back(mid_edge_summary(data.model().high_order.placed));
+    r.notes.push_back(mid_edge_summary(place_mid_edge_nodes(data, gmsh_cad_mid_edge_projector())));
   }
   set_fe_measures(r.before, fe_before);
   set_fe_measures(r.after,

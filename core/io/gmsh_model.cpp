@@ -104,7 +104,7 @@ const std::vector<std::pair<int, int>>& mid_edge_table(int type) {
 // For a high-order element: what to do instead.
 std::string order_hint(int type) {
   if (type_order(type) <= 1) return "";
-  return "; cvtmesh reads order-2 tetrahedral meshes (tet10, tri6, line3); for another "
+  return "; cvtmesh reads order-2 simplex meshes (tet10, tri6, line3); for another "
          "high-order mesh, optimize its order-1 mesh (gmsh -order 1, or Mesh.ElementOrder = 1) "
          "and raise the order afterwards (gmsh -order N)";
 }
@@ -206,11 +206,6 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
             (o2 && static_cast<int>(i % nn) >= nc ? mid_nodes : corner_nodes)
                 .insert(e.enodes[k][i]);
         }
-    if (order2 && dim == 2)
-      throw InputError(what +
-                       ": order-2 triangles in a 2D mesh are not supported (3D order-2 meshes "
-                       "are); optimize its order-1 mesh (gmsh -order 1) and raise the order "
-                       "afterwards (gmsh -order 2)");
     for (std::size_t n : corner_nodes) mid_nodes.erase(n);
 
     // Nodes, classified on the entity they belong to (not the mid-edge nodes of order 2).
@@ -323,13 +318,15 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           info.extra.push_back(std::move(b));
         } else if (d == dim) {
           const int want = dim == 3 ? 4 : 2;
+          // Quadrangles of order 1 (3), 2 (10: 9 nodes, 16: 8 nodes) or higher.
+          const bool quad = type_name(type).rfind("Quadrilateral", 0) == 0;
           if (type != want)
             throw InputError(
                 what + ": unsupported element type '" + type_name(type) + "' in " +
-                (dim == 3 ? "volume " : "surface ") + std::to_string(t) +
-                " (cvtmesh optimizes linear " + (dim == 3 ? "tetrahedra" : "triangles") + " only" +
-                (type == 3 ? "; mesh the surface without Recombine for triangles" : "") +
-                order_hint(type) + ")");
+                (dim == 3 ? "volume " : "surface ") + std::to_string(t) + " (cvtmesh optimizes " +
+                (dim == 3 ? "tetrahedra" : "triangles") + " of order 1 or 2 only" +
+                (quad ? "; mesh the surface without Recombine for triangles" : order_hint(type)) +
+                ")");
           const int npe = dim + 1;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) cells.push_back(vid(nd[npe * e + j]));
@@ -341,8 +338,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           if (type != want)
             throw InputError(what + ": unsupported element type '" + type_name(type) + "' on " +
                              (dim == 3 ? "surface " : "curve ") + std::to_string(t) +
-                             " (expected linear " + (dim == 3 ? "triangles" : "lines") + ")" +
-                             order_hint(type));
+                             " (expected " + (dim == 3 ? "triangles" : "lines") +
+                             " of order 1 or 2)" + order_hint(type));
           const int npe = dim;
           for (std::size_t e = 0; e < tg.size(); ++e) {
             for (int j = 0; j < npe; ++j) facets.push_back(vid(nd[npe * e + j]));
@@ -401,8 +398,19 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     } else {
       TriMesh2& m = out.tri;
       const std::size_t n = node_tags.size();
-      // Planarity: every node of the 2D mesh at the same z (relative tolerance).
+      // Planarity: every node of the 2D mesh at the same z (relative tolerance), an order-2
+      // mesh's mid-edge nodes too.
       const ZRange zr = z_range(xyz);
+      if (zr.planar && !info.high_order.xyz.empty()) {
+        std::vector<double> all = xyz;
+        all.insert(all.end(), info.high_order.xyz.begin(), info.high_order.xyz.end());
+        if (!z_range(all).planar)
+          throw InputError(what +
+                           ": the mid-edge nodes of the order-2 triangles are not in the plane of "
+                           "their corners (z = " +
+                           std::to_string(zr.zmin) +
+                           "); 2D optimization needs a mesh in a plane z = const");
+      }
       const double zmin = zr.zmin, zmax = zr.zmax;
       // The surfaces that leave the plane of the first one, named in the message.
       std::string off_plane;
@@ -557,7 +565,8 @@ std::vector<std::size_t> node_tags_for(const std::vector<std::size_t>& original,
 
 // An order-2 mesh's mid-edge nodes for the mesh being written: the placement made for these
 // coordinates (place_mid_edge_nodes with the CAD, by the caller), else one made here (no CAD).
-MidEdgePlacement mid_edge_nodes_for(const TetMesh& m) {
+template <class Mesh>
+MidEdgePlacement mid_edge_nodes_for(const Mesh& m) {
   const MidEdgePlacement& p = m.model.high_order.placed;
   if (!p.edges.empty() && p.fingerprint == mid_edge_fingerprint(m)) return p;
   return place_mid_edge_nodes(m);
@@ -578,11 +587,11 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
   // Nodes.
   const int nv = dim == 3 ? data.tet.nb_vertices() : data.tri.nb_vertices();
   const auto& vclass = dim == 3 ? data.tet.vclass : data.tri.vclass;
-  const bool order2 = dim == 3 && info.high_order.order == 2;
+  const bool order2 = info.high_order.order == 2;
   MidEdgePlacement mid;
   std::size_t floor = 0;
   if (order2) {
-    mid = mid_edge_nodes_for(data.tet);
+    mid = dim == 3 ? mid_edge_nodes_for(data.tet) : mid_edge_nodes_for(data.tri);
     for (std::size_t t : info.high_order.tags) floor = std::max(floor, t);
   }
   const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv, floor);

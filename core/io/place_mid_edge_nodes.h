@@ -5,8 +5,10 @@
 #include <functional>
 #include <string>
 
+#include "core/mesh/mesh_data.h"
 #include "core/mesh/mid_edge_nodes.h"
 #include "core/mesh/tet_mesh.h"
+#include "core/mesh/tri_mesh2.h"
 
 namespace cvtmesh {
 
@@ -31,8 +33,22 @@ using MidEdgeProjector = std::function<bool(int dim, int tag, const double* p, d
 MidEdgePlacement place_mid_edge_nodes(const TetMesh& mesh, const MidEdgeProjector& project = {},
                                       bool fallback = true);
 
+// The same for a planar triangle mesh (tri6, line3): one node on every edge of mesh's live
+// triangles and segments (mesh.edges, on their curves), by the same rules, a segment's edge
+// being the boundary edge (projected on its curve, or the input's offset carried); an edge is
+// the input's unmoved one when its corners' x and y are the input's, and every node placed here
+// lies in the mesh's plane z = z0 (a kept node keeps the input's coordinates). Then every
+// triangle is checked (tri6_positive), with the same fallback and counts.
+MidEdgePlacement place_mid_edge_nodes(const TriMesh2& mesh, const MidEdgeProjector& project = {},
+                                      bool fallback = true);
+
+// The placement for data's mesh (3D or 2D, as above, with the fallback), stored in
+// data.model().high_order.placed, where the writers take it while the coordinates are these.
+const MidEdgePlacement& place_mid_edge_nodes(MeshData& data, const MidEdgeProjector& project = {});
+
 // A hash of the mesh's coordinates: a placement is used only for the coordinates it was made for.
 std::uint64_t mid_edge_fingerprint(const TetMesh& mesh);
+std::uint64_t mid_edge_fingerprint(const TriMesh2& mesh);
 
 // One line for the summary: "order-2 mesh: N mid-edge nodes re-placed: ... kept, ... on the CAD,
 // ... straight (... because a curved node would invert an element)".

@@ -54,8 +54,9 @@ $Elements
 $EndElements
 )";
 
-// A planar order-2 triangle (tri6): 3D order-2 meshes are read since issue 14, 2D ones are not.
-std::string second_order_tri() {
+// A planar order-2 quadrangle (quad9): order-2 triangles (tri6) are read since issue 14's 2D
+// follow-up, quadrangles of any order are not.
+std::string second_order_quad() {
   return R"($MeshFormat
 4.1 0 8
 $EndMeshFormat
@@ -64,25 +65,31 @@ $Entities
 1 0 0 0 1 1 0 0 0
 $EndEntities
 $Nodes
-1 6 1 6
-2 1 0 6
+1 9 1 9
+2 1 0 9
 1
 2
 3
 4
 5
 6
+7
+8
+9
 0 0 0
 1 0 0
+1 1 0
 0 1 0
 0.5 0 0
-0.5 0.5 0
+1 0.5 0
+0.5 1 0
 0 0.5 0
+0.5 0.5 0
 $EndNodes
 $Elements
 1 1 1 1
-2 1 9 1
-1 1 2 3 4 5 6
+2 1 10 1
+1 1 2 3 4 5 6 7 8 9
 $EndElements
 )";
 }
@@ -209,9 +216,9 @@ std::vector<BadInputCase> bad_input_corpus() {
           edit(tet, "0 0 0\n1 0 0\n", std::string("\x01\0\0\0\xff\xfe\x80\x3f\0\0\n", 12)),
           "nodes"),
       // Hexahedra, prisms and pyramids beside tets are kept verbatim since issue 14 (hybrid
-      // meshes: tests/robust/robust_inputs_test.cpp), and order-2 tets too (tests/io/
-      // order2_test.cpp); a 2D order-2 mesh is still refused.
-      one("second_order_2d.msh", second_order_tri(), "order-2"),
+      // meshes: tests/robust/robust_inputs_test.cpp), and order-2 tets and triangles are read
+      // (tests/io/order2_test.cpp); a 2D order-2 quadrangle is still refused, by its name.
+      one("second_order_quad.msh", second_order_quad(), "Quadrilateral 9"),
       // A tet with negative volume is read (turned positive, tests/robust/robust_inputs_test.cpp);
       // one that, turned positive, lies inside its neighbour is a tangled mesh.
       one("tangled.msh",

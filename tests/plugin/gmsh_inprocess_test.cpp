@@ -184,6 +184,67 @@ TEST_F(GmshInProcess, DefaultMethodMovesTheBoundaryOnTheCadSphereTo1e12) {
   EXPECT_EQ(nodes(0), points);
 }
 
+// An order-2 OCC disk in the current model (tri6 + line3): optimized in place, it stays order 2,
+// its interior mid-edge nodes straight, its boundary ones on the circle (kept: the 2D boundary
+// does not move), and the notes say how the nodes were placed.
+TEST_F(GmshInProcess, PlanarOrder2DiskStaysOrder2) {
+  gmsh::model::add("disk");
+  gmsh::model::occ::addDisk(0.1, 0.2, 0, 1, 1);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.2);
+  gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::setOrder(2);
+  const auto before = nodes(2);
+  GmshOptimizeOptions o;
+  o.optimize.max_iterations = 10;
+  const GmshOptimizeResult r = gmsh_optimize(o);
+  EXPECT_EQ(r.dim, 2);
+  bool noted = false;
+  for (const auto& n : r.result.notes) noted |= n.find("order-2 mesh:") != std::string::npos;
+  EXPECT_TRUE(noted);
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2);
+  EXPECT_EQ(types, std::vector<int>{9});
+  gmsh::model::mesh::getElementTypes(types, 1);
+  EXPECT_EQ(types, std::vector<int>{8});
+  const auto after = nodes(2);
+  // Interior: tri6 mid-edge nodes (classified on the surface) are straight midpoints.
+  std::vector<std::size_t> tags, nd;
+  gmsh::model::mesh::getElementsByType(9, tags, nd);
+  ASSERT_FALSE(tags.empty());
+  std::map<std::size_t, std::vector<double>> interior;
+  {
+    std::vector<std::size_t> t;
+    std::vector<double> xyz, uv;
+    gmsh::model::mesh::getNodes(t, xyz, uv, 2, 1, false, false);
+    for (std::size_t i = 0; i < t.size(); ++i)
+      interior[t[i]] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  }
+  static const int kEdge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  double worst = 0;
+  int moved = 0;
+  for (std::size_t e = 0; e < tags.size(); ++e)
+    for (int k = 0; k < 3; ++k) {
+      auto m = interior.find(nd[6 * e + 3 + k]);
+      if (m == interior.end()) continue;
+      const auto& a = after.at(nd[6 * e + kEdge[k][0]]);
+      const auto& b = after.at(nd[6 * e + kEdge[k][1]]);
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::fabs(m->second[c] - 0.5 * (a[c] + b[c])));
+    }
+  for (const auto& [tag, x] : interior) moved += before.count(tag) && before.at(tag) != x;
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(moved, 0);
+  // Boundary: the line3's nodes on the circle.
+  std::vector<std::size_t> line_tags, line_nodes;
+  gmsh::model::mesh::getElementsByType(8, line_tags, line_nodes);
+  ASSERT_FALSE(line_tags.empty());
+  for (std::size_t e = 0; e < line_tags.size(); ++e) {
+    const auto& x = after.at(line_nodes[3 * e + 2]);
+    EXPECT_LE(std::fabs(std::hypot(x[0] - 0.1, x[1] - 0.2) - 1), 1e-9);
+  }
+}
+
 TEST_F(GmshInProcess, RunningAgainReplacesTheQualityViews) {
   const auto methods = methods_for_dim(3);
   ASSERT_FALSE(methods.empty());
