@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/io/gmsh_model_elements.h"
+#include "core/io/gmsh_partition_map.h"
 #include "core/io/tag_index.h"
 #include "core/mesh/face_buckets.h"
 
@@ -70,26 +72,29 @@ long add_missing_facets(int dim) {
   std::vector<Block> blocks;
   std::vector<std::size_t> first_cell;  // per block, its first cell's global number
   std::size_t nb_cells = 0, max_node = 0;
+  // A partitioned model's cells are its model volumes' (surfaces' in 2D), its ghost cells
+  // skipped; facets between two parts of one volume are not interfaces (gmsh_partition_map.h).
+  const GmshPartitionMap parts = read_gmsh_partition_map("the model");
   {
     gmsh::vectorpair cells_ents;
     gmsh::model::getEntities(cells_ents, dim);
-    for (const auto& [d, ent] : cells_ents) {
+    for (const GmshEntityElements& g : read_model_elements(cells_ents, parts)) {
       Block b;
-      b.entity = ent;
-      std::vector<std::size_t> tags;
-      gmsh::model::mesh::getElementsByType(cell_type, tags, b.nodes, ent);
-      {
-        std::vector<std::size_t> tags2, nodes2;
-        gmsh::model::mesh::getElementsByType(cell_type2, tags2, nodes2, ent);
-        const std::size_t nn = nodes2.size() / std::max<std::size_t>(tags2.size(), 1);
-        for (std::size_t e = 0; e < tags2.size(); ++e)
-          b.nodes.insert(b.nodes.end(), &nodes2[nn * e], &nodes2[nn * e] + npe);
-        tags.insert(tags.end(), tags2.begin(), tags2.end());
-      }
-      if (tags.empty()) continue;
+      b.entity = g.tag;
+      std::size_t nb = 0;
+      for (int want : {cell_type, cell_type2})
+        for (std::size_t k = 0; k < g.types.size(); ++k) {
+          if (g.types[k] != want) continue;
+          const std::vector<std::size_t>& nodes = g.nodes[k];
+          const std::size_t nn = nodes.size() / std::max<std::size_t>(g.tags[k].size(), 1);
+          for (std::size_t e = 0; e < g.tags[k].size(); ++e)
+            b.nodes.insert(b.nodes.end(), &nodes[nn * e], &nodes[nn * e] + npe);
+          nb += g.tags[k].size();
+        }
+      if (nb == 0) continue;
       for (std::size_t n : b.nodes) max_node = std::max(max_node, n);
       first_cell.push_back(nb_cells);
-      nb_cells += tags.size();
+      nb_cells += nb;
       blocks.push_back(std::move(b));
     }
   }
@@ -187,7 +192,9 @@ long add_missing_facets(int dim) {
       std::vector<std::size_t> tags;
       std::vector<double> xyz, par;
       gmsh::model::mesh::getNodes(tags, xyz, par, dd, t, false, false);
-      for (std::size_t n : tags) where[n] = {dd, t};
+      const GmshDimTag owner = parts.node_owner(dd, t);
+      if (owner.first >= dim) continue;  // an interface between parts inside a volume
+      for (std::size_t n : tags) where[n] = owner;
     }
   }
   std::map<int, std::vector<int>> bounding;              // cell entity -> facet entities
