@@ -137,13 +137,19 @@ long add_missing_facets(int dim) {
   // Facets that are elements already (their first record marked); the largest element tag.
   std::vector<char> present(sorted.size(), 0);
   std::size_t max_tag = 0;
-  {
+  // A partitioned model: entity by entity, the facets of ghost and interface entities are not
+  // the model's (Gmsh 4.8 may put a facet of a model surface that is also an interface between
+  // parts on an interface entity of a volume).
+  gmsh::vectorpair all = {{-1, -1}};
+  if (parts.partitioned()) gmsh::model::getEntities(all);
+  for (const auto& [d, t] : all) {
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> etags, enodes;
-    gmsh::model::mesh::getElements(types, etags, enodes, -1, -1);
+    gmsh::model::mesh::getElements(types, etags, enodes, d, t);
+    const bool model = d < 0 || parts.element_owner(d, t).first >= 0;
     for (std::size_t k = 0; k < types.size(); ++k) {
-      for (std::size_t t : etags[k]) max_tag = std::max(max_tag, t);
-      if (types[k] != facet_type && types[k] != facet_type2) continue;
+      for (std::size_t tag : etags[k]) max_tag = std::max(max_tag, tag);
+      if (!model || (types[k] != facet_type && types[k] != facet_type2)) continue;
       const std::size_t nn = enodes[k].size() / std::max<std::size_t>(etags[k].size(), 1);
       for (std::size_t e = 0; e < etags[k].size(); ++e) {
         std::uint32_t key[3] = {0, 0, 0};
