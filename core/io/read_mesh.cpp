@@ -298,6 +298,13 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
         // A surface mesh of volumes without tetrahedra (gmsh -2 -save_all, a closed surface in a
         // mesh format): the volumes are meshed, the file's blocks written back with them.
         if (options.dim != 2 && is_surface_mesh_of_volumes()) {
+          // Gmsh meshes a volume from its model surfaces' elements, which a partitioned file
+          // holds on partition entities (their curves' and points' nodes moved too).
+          if (parts.partitioned())
+            throw InputError("'" + path + "' is a partitioned surface mesh of volumes without " +
+                             "tetrahedra: cvtmesh does not mesh the volumes of a partitioned " +
+                             "surface mesh; save it unpartitioned (without -part), or mesh the " +
+                             "volumes first (gmsh -3 -part N)");
           const std::vector<int> volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
           for (int v : volumes) file_blocks.push_back({3, v, 4});
           std::sort(file_blocks.begin(), file_blocks.end());

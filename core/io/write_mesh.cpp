@@ -78,7 +78,8 @@ Repartitioned write_with_gmsh(const MeshData& data, const std::string& tmp,
   };
   try {
     // A .msh holds what Gmsh would save of this model (select_msh_elements.h); per-element data
-    // covers every written element, numbered in file order, as meshio reads it.
+    // covers every written element, numbered in file order, as meshio reads it (a partitioned
+    // output: the cells, by their tags).
     const bool msh = ext == ".msh";
     const bool partitioned = msh && data.model().partitioning.nb_parts > 0;
     MshSelection selection;

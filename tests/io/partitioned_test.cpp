@@ -294,7 +294,7 @@ TEST(Partitioned, ConvertKeepsTheInputsParts) {
   EXPECT_EQ(read_mesh(dir + "/c.vtk").tet.nb_tets(), read_mesh(in).tet.nb_tets());
 }
 
-TEST(Partitioned, OneFileOfASplitMeshIsRefused) {
+TEST(Partitioned, SplitFileAndPartitionedSurfaceMeshAreRefused) {
   const std::string dir = testing::temp_dir();
   gmsh_file(dir, kBoxBalls, "-3 -part 3 -part_split", "split.msh");
   const std::string part = dir + "/split_2.msh";
@@ -305,6 +305,16 @@ TEST(Partitioned, OneFileOfASplitMeshIsRefused) {
     const std::string m = e.what();
     EXPECT_NE(m.find("'" + part + "' holds part 2 of 3"), std::string::npos) << m;
     EXPECT_NE(m.find("-part_split"), std::string::npos) << m;
+  }
+  // A partitioned surface mesh without tetrahedra: Gmsh meshes a volume from its model
+  // surfaces' elements, which the partition entities hold.
+  const std::string surface = gmsh_file(dir, kBoxBalls, "-2 -save_all -part 3", "surface.msh");
+  try {
+    read_mesh(surface);
+    FAIL() << "a partitioned surface mesh had its volumes meshed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("partitioned surface mesh"), std::string::npos)
+        << e.what();
   }
 }
 
