@@ -20,7 +20,10 @@ void register_convert(CLI::App& app) {
                           const MeshData d = read_mesh(in->path, in->to_read_options());
                           for (const auto& note : d.model().read_notes)
                             info() << "cvtmesh: note: " << note << "\n";
-                          write_mesh(d, out->path, out->to_write_options(d, in->path));
+                          const WriteReport written =
+                              write_mesh(d, out->path, out->to_write_options(d, in->path));
+                          for (const auto& note : written.notes)
+                            info() << "cvtmesh: note: " << note << "\n";
                           info() << "cvtmesh: wrote " << out->path << "\n";
                           return 0;
                         }});

@@ -47,7 +47,8 @@ void register_mesh(CLI::App& app) {
                stderr, "cvtmesh: Gmsh optimize: %.3f s\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
          }
-         write_mesh(d, out->path, out->to_write_options(d, in->path));
+         const WriteReport written = write_mesh(d, out->path, out->to_write_options(d, in->path));
+         for (const auto& note : written.notes) info() << "cvtmesh: note: " << note << "\n";
          info() << "cvtmesh: wrote " << out->path << "\n";
          return 0;
        }});

@@ -172,8 +172,9 @@ void register_optimize(CLI::App& app) {
            cad.reset();
            if (!writer) return kExitOk;
            progress->begin("writing", out->path);
-           write_mesh(d, out->path, out->to_write_options(d, in->path));
+           const WriteReport written = write_mesh(d, out->path, out->to_write_options(d, in->path));
            progress->done();
+           for (const auto& note : written.notes) info() << "cvtmesh: note: " << note << "\n";
            info() << "cvtmesh: wrote " << out->path << " (" << partition->parts << " parts, "
                   << partition->rounds << " rounds)\n";
            return kExitOk;
@@ -213,8 +214,9 @@ void register_optimize(CLI::App& app) {
          opt->boundary_model = nullptr;
          opt->progress = nullptr;
          progress->begin("writing", out->path);
-         write_mesh(d, out->path, out->to_write_options(d, in->path));
+         const WriteReport written = write_mesh(d, out->path, out->to_write_options(d, in->path));
          progress->done();
+         r.notes.insert(r.notes.end(), written.notes.begin(), written.notes.end());
          QualityTable t;
          QualityStats before = r.before, after = r.after;
          before.label = "input";

@@ -62,7 +62,10 @@ void register_perturb(CLI::App& app) {
                           po.amount = o->amount;
                           po.attractor = o->attractor;
                           const Perturb2dResult pr = perturb_2d(d.tri, po);
-                          write_mesh(d, o->out.path, o->out.to_write_options(d, o->in.path));
+                          const WriteReport written =
+                              write_mesh(d, o->out.path, o->out.to_write_options(d, o->in.path));
+                          for (const auto& note : written.notes)
+                            info() << "cvtmesh: note: " << note << "\n";
                           if (!o->svg.empty()) write_svg(d.tri, o->svg);
                           std::ostream& log = info();
                           log << "cvtmesh: perturbed " << pr.nb_moved << " vertices";

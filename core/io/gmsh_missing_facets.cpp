@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/io/gmsh_model_elements.h"
+#include "core/io/gmsh_partition_map.h"
 #include "core/io/tag_index.h"
 #include "core/mesh/face_buckets.h"
 
@@ -70,26 +72,29 @@ long add_missing_facets(int dim) {
   std::vector<Block> blocks;
   std::vector<std::size_t> first_cell;  // per block, its first cell's global number
   std::size_t nb_cells = 0, max_node = 0;
+  // A partitioned model's cells are its model volumes' (surfaces' in 2D), its ghost cells
+  // skipped; facets between two parts of one volume are not interfaces (gmsh_partition_map.h).
+  const GmshPartitionMap parts = read_gmsh_partition_map("the model");
   {
     gmsh::vectorpair cells_ents;
     gmsh::model::getEntities(cells_ents, dim);
-    for (const auto& [d, ent] : cells_ents) {
+    for (const GmshEntityElements& g : read_model_elements(cells_ents, parts)) {
       Block b;
-      b.entity = ent;
-      std::vector<std::size_t> tags;
-      gmsh::model::mesh::getElementsByType(cell_type, tags, b.nodes, ent);
-      {
-        std::vector<std::size_t> tags2, nodes2;
-        gmsh::model::mesh::getElementsByType(cell_type2, tags2, nodes2, ent);
-        const std::size_t nn = nodes2.size() / std::max<std::size_t>(tags2.size(), 1);
-        for (std::size_t e = 0; e < tags2.size(); ++e)
-          b.nodes.insert(b.nodes.end(), &nodes2[nn * e], &nodes2[nn * e] + npe);
-        tags.insert(tags.end(), tags2.begin(), tags2.end());
-      }
-      if (tags.empty()) continue;
+      b.entity = g.tag;
+      std::size_t nb = 0;
+      for (int want : {cell_type, cell_type2})
+        for (std::size_t k = 0; k < g.types.size(); ++k) {
+          if (g.types[k] != want) continue;
+          const std::vector<std::size_t>& nodes = g.nodes[k];
+          const std::size_t nn = nodes.size() / std::max<std::size_t>(g.tags[k].size(), 1);
+          for (std::size_t e = 0; e < g.tags[k].size(); ++e)
+            b.nodes.insert(b.nodes.end(), &nodes[nn * e], &nodes[nn * e] + npe);
+          nb += g.tags[k].size();
+        }
+      if (nb == 0) continue;
       for (std::size_t n : b.nodes) max_node = std::max(max_node, n);
       first_cell.push_back(nb_cells);
-      nb_cells += tags.size();
+      nb_cells += nb;
       blocks.push_back(std::move(b));
     }
   }
@@ -132,13 +137,19 @@ long add_missing_facets(int dim) {
   // Facets that are elements already (their first record marked); the largest element tag.
   std::vector<char> present(sorted.size(), 0);
   std::size_t max_tag = 0;
-  {
+  // A partitioned model: entity by entity, the facets of ghost and interface entities are not
+  // the model's (Gmsh 4.8 may put a facet of a model surface that is also an interface between
+  // parts on an interface entity of a volume).
+  gmsh::vectorpair all = {{-1, -1}};
+  if (parts.partitioned()) gmsh::model::getEntities(all);
+  for (const auto& [d, t] : all) {
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> etags, enodes;
-    gmsh::model::mesh::getElements(types, etags, enodes, -1, -1);
+    gmsh::model::mesh::getElements(types, etags, enodes, d, t);
+    const bool model = d < 0 || parts.element_owner(d, t).first >= 0;
     for (std::size_t k = 0; k < types.size(); ++k) {
-      for (std::size_t t : etags[k]) max_tag = std::max(max_tag, t);
-      if (types[k] != facet_type && types[k] != facet_type2) continue;
+      for (std::size_t tag : etags[k]) max_tag = std::max(max_tag, tag);
+      if (!model || (types[k] != facet_type && types[k] != facet_type2)) continue;
       const std::size_t nn = enodes[k].size() / std::max<std::size_t>(etags[k].size(), 1);
       for (std::size_t e = 0; e < etags[k].size(); ++e) {
         std::uint32_t key[3] = {0, 0, 0};
@@ -187,7 +198,9 @@ long add_missing_facets(int dim) {
       std::vector<std::size_t> tags;
       std::vector<double> xyz, par;
       gmsh::model::mesh::getNodes(tags, xyz, par, dd, t, false, false);
-      for (std::size_t n : tags) where[n] = {dd, t};
+      const GmshDimTag owner = parts.node_owner(dd, t);
+      if (owner.first >= dim) continue;  // an interface between parts inside a volume
+      for (std::size_t n : tags) where[n] = owner;
     }
   }
   std::map<int, std::vector<int>> bounding;              // cell entity -> facet entities

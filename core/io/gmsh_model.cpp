@@ -13,6 +13,9 @@
 
 #include "core/geometry/z_range.h"
 #include "core/geometry/predicates.h"
+#include "core/io/gmsh_model_elements.h"
+#include "core/io/gmsh_partition_map.h"
+#include "core/io/gmsh_repartition.h"
 #include "core/io/gmsh_session.h"
 #include "core/mesh/reorient_tets.h"
 #include "core/io/place_mid_edge_nodes.h"
@@ -109,6 +112,66 @@ std::string order_hint(int type) {
          "and raise the order afterwards (gmsh -order N)";
 }
 
+// A partitioned model's nodes (tags, 3 coordinates each) in the order of the unpartitioned file:
+// by model entity (the order of `ents`), then by tag. Gmsh 4.8's partitioner adds a node on the
+// partition entity of a model point that has none in the mesh (the centre of an arc, say): the
+// nodes of partition entities that no element uses are dropped.
+template <class Elements>
+void order_partitioned_nodes(const GmshPartitionMap& parts, const gmsh::vectorpair& ents,
+                             const Elements& elements, std::vector<std::size_t>& tags,
+                             std::vector<double>& xyz) {
+  std::map<GmshDimTag, std::size_t> position;
+  for (std::size_t i = 0; i < ents.size(); ++i) position.emplace(ents[i], i);
+  std::unordered_map<std::size_t, std::size_t> owner_position;
+  std::unordered_set<std::size_t> unused;
+  for (const auto& [d, t] : ents) {
+    std::vector<std::size_t> nt;
+    std::vector<double> c, p;
+    gmsh::model::mesh::getNodes(nt, c, p, d, t, false, false);
+    const auto it = position.find(parts.node_owner(d, t));
+    const std::size_t pos = it == position.end() ? ents.size() : it->second;
+    for (std::size_t n : nt) owner_position[n] = pos;
+    if (!parts.is_model_entity(d, t)) unused.insert(nt.begin(), nt.end());
+  }
+  for (const auto& e : elements)
+    for (const auto& nodes : e.enodes)
+      for (std::size_t n : nodes) unused.erase(n);
+  std::vector<std::size_t> order;
+  order.reserve(tags.size());
+  for (std::size_t i = 0; i < tags.size(); ++i)
+    if (!unused.count(tags[i])) order.push_back(i);
+  auto key = [&](std::size_t i) {
+    const auto it = owner_position.find(tags[i]);
+    return std::make_pair(it == owner_position.end() ? ents.size() : it->second, tags[i]);
+  };
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::vector<std::size_t> t(order.size());
+  std::vector<double> x(3 * order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    t[i] = tags[order[i]];
+    std::copy_n(&xyz[3 * order[i]], 3, &x[3 * i]);
+  }
+  tags = std::move(t);
+  xyz = std::move(x);
+}
+
+// The cells' parts by element tag (Partitioning::cell_tags, cell_parts).
+void record_cell_parts(const std::vector<std::size_t>& tags, const std::vector<int>& parts,
+                       Partitioning& p) {
+  if (parts.size() != tags.size()) return;
+  std::vector<std::size_t> order(tags.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+  p.cell_tags.resize(order.size());
+  p.cell_parts.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    p.cell_tags[i] = tags[order[i]];
+    p.cell_parts[i] = parts[order[i]];
+  }
+}
+
 std::string check_summary(const MeshCheck& c) {
   std::string s;
   for (std::size_t i = 0; i < c.problems.size() && i < 3; ++i) s += (i ? "; " : "") + c.problems[i];
@@ -125,6 +188,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     gmsh::model::getCurrent(info.name);
     gmsh::vectorpair ents;
     gmsh::model::getEntities(ents);
+    // A partitioned model is read as its model (gmsh_partition_map.h).
+    const GmshPartitionMap parts = read_gmsh_partition_map(what);
+    info.partitioning = parts.partitioning;
     // Highest dimension with elements.
     int max_dim = -1;
     for (const auto& [d, t] : ents) {
@@ -143,6 +209,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     out.dim = dim;
 
     for (const auto& [d, t] : ents) {
+      if (!parts.is_model_entity(d, t)) continue;
       ModelEntity e;
       e.dim = d;
       e.tag = t;
@@ -155,6 +222,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     }
     // Periodic links (entity and node correspondences), kept by node tag.
     for (const auto& [d, t] : ents) {
+      if (!parts.is_model_entity(d, t)) continue;
       PeriodicLink l;
       l.dim = d;
       l.tag = t;
@@ -176,21 +244,19 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       gmsh::model::getEntitiesForPhysicalGroup(d, t, g.entities);
       info.groups.push_back(g);
     }
+    parts.map_groups(info.groups);
 
     // Elements of every entity, read once.
     struct EntityElements {
       int d = 0, t = 0;
       std::vector<int> types;
       std::vector<std::vector<std::size_t>> etags, enodes;
+      std::vector<std::vector<int>> parts;  // a partitioned model's (gmsh_model_elements.h)
     };
     std::vector<EntityElements> elements;
-    for (const auto& [d, t] : ents) {
-      EntityElements e;
-      e.d = d;
-      e.t = t;
-      gmsh::model::mesh::getElements(e.types, e.etags, e.enodes, d, t);
-      elements.push_back(std::move(e));
-    }
+    for (GmshEntityElements& g : read_model_elements(ents, parts))
+      elements.push_back({g.dim, g.tag, std::move(g.types), std::move(g.tags), std::move(g.nodes),
+                          std::move(g.parts)});
     // Order-2 simplices (line3, tri6, tet10): their corners make the mesh we optimize; their
     // mid-edge nodes are kept aside (info.high_order) and re-placed by the writers.
     bool order2 = false;
@@ -212,6 +278,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     std::vector<std::size_t> all_tags, node_tags;
     std::vector<double> all_xyz, par;
     gmsh::model::mesh::getNodes(all_tags, all_xyz, par, -1, -1, false, false);
+    if (parts.partitioned()) order_partitioned_nodes(parts, ents, elements, all_tags, all_xyz);
     std::unordered_map<std::size_t, std::size_t> all_index;  // tag -> position in all_tags
     if (order2) {
       all_index.reserve(all_tags.size() * 2);
@@ -238,11 +305,12 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       std::vector<std::size_t> tags;
       std::vector<double> c, p;
       gmsh::model::mesh::getNodes(tags, c, p, d, t, false, false);
+      const GmshDimTag owner = parts.node_owner(d, t);
       for (std::size_t tag : tags) {
         const int v = index.find(tag);
         if (v < 0) continue;
-        vclass[v].dim = static_cast<std::int8_t>(d);
-        vclass[v].entity = t;
+        vclass[v].dim = static_cast<std::int8_t>(owner.first);
+        vclass[v].entity = owner.second;
       }
     }
     auto vid = [&](std::size_t tag) {
@@ -283,6 +351,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     // Elements, entity by entity.
     std::vector<int> cells, cell_entity, facets, facet_entity;
     std::vector<std::size_t> cell_tags, facet_tags;
+    std::vector<int> cell_parts;  // a partitioned model's
     for (const auto& el : elements) {
       const int d = el.d, t = el.t;
       for (std::size_t k = 0; k < el.types.size(); ++k) {
@@ -333,6 +402,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
             cell_entity.push_back(t);
             cell_tags.push_back(tg[e]);
           }
+          if (!el.parts.empty())
+            cell_parts.insert(cell_parts.end(), el.parts[k].begin(), el.parts[k].end());
         } else if (d == dim - 1) {
           const int want = dim == 3 ? 2 : 1;
           if (type != want)
@@ -355,6 +426,16 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
                            "') but is read as a " + std::to_string(dim) + "D mesh");
         }
       }
+    }
+    if (parts.partitioned()) {
+      // A node of a boundary facet is on the boundary: an input whose classification came from
+      // its elements (MSH 2.2, restored facets) may have put it on an interface between parts.
+      for (std::size_t f = 0; f < facet_entity.size(); ++f)
+        for (int k = 0; k < dim; ++k) {
+          VertexClass& c = vclass[facets[dim * f + k]];
+          if (c.dim == dim) c = {static_cast<std::int8_t>(dim - 1), facet_entity[f]};
+        }
+      record_cell_parts(cell_tags, cell_parts, info.partitioning);
     }
     bool kept_cells = false;
     for (const auto& b : info.extra) kept_cells |= b.dim == dim;
@@ -765,8 +846,13 @@ GmshWritten mesh_to_gmsh(const MeshData& data, const std::string& model_name) {
 GmshWritten replace_gmsh_mesh(const MeshData& data) {
   GmshWritten w;
   gmsh_checked("cannot replace the mesh of the current Gmsh model", [&] {
+    // A partitioned model: its mesh goes back to the model entities, is replaced, and is
+    // partitioned again (gmsh_repartition.h).
+    const Partitioning& parts = data.model().partitioning;
+    if (parts.nb_parts > 0) gmsh::model::mesh::unpartition();
     gmsh::model::mesh::clear();
     w = fill_current_model(data, false);
+    if (parts.nb_parts > 0) repartition_gmsh_model(parts, data.dim);
   });
   return w;
 }

@@ -25,6 +25,8 @@
 #include "core/io/gmsh_mesh_volumes.h"
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
+#include "core/io/gmsh_partition_map.h"
+#include "core/io/gmsh_repartition.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/gmsh_surface.h"
 #include "core/io/gmsh_views.h"
@@ -292,15 +294,29 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
       } else {
         // The blocks the file holds: a .msh writer writes these and no others (write_mesh.h).
         origin = ElementOrigin::kMeshFile;
+        // A partitioned file's blocks are its model entities' (gmsh_partition_map.h); one file
+        // of a mesh saved one file per part is refused.
+        const GmshPartitionMap parts = read_gmsh_partition_map(
+            "'" + path + "'", ext == ".msh" ? read_msh_partition_count(path) : 0);
         for (const auto& [d, t] : ents) {
+          const GmshDimTag owner = parts.element_owner(d, t);
+          if (owner.first < 0) continue;
           std::vector<int> types;
           gmsh::model::mesh::getElementTypes(types, d, t);
-          for (int type : types) file_blocks.push_back({d, t, type});
+          for (int type : types) file_blocks.push_back({owner.first, owner.second, type});
         }
         std::sort(file_blocks.begin(), file_blocks.end());
+        file_blocks.erase(std::unique(file_blocks.begin(), file_blocks.end()), file_blocks.end());
         // A surface mesh of volumes without tetrahedra (gmsh -2 -save_all, a closed surface in a
         // mesh format): the volumes are meshed, the file's blocks written back with them.
         if (options.dim != 2 && is_surface_mesh_of_volumes()) {
+          // Gmsh meshes a volume from its model surfaces' elements, which a partitioned file
+          // holds on partition entities (their curves' and points' nodes moved too).
+          if (parts.partitioned())
+            throw InputError("'" + path + "' is a partitioned surface mesh of volumes without " +
+                             "tetrahedra: cvtmesh does not mesh the volumes of a partitioned " +
+                             "surface mesh; save it unpartitioned (without -part), or mesh the " +
+                             "volumes first (gmsh -3 -part N)");
           const std::vector<int> volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
           for (int v : volumes) file_blocks.push_back({3, v, 4});
           std::sort(file_blocks.begin(), file_blocks.end());
@@ -341,6 +357,11 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     std::sort(file_blocks.begin(), file_blocks.end());
   }
   data.model().file_blocks = std::move(file_blocks);
+  // A partitioned .msh: how a writer tells that the mesh reaches it unchanged (gmsh_repartition.h).
+  if (Partitioning& parts = data.model().partitioning; parts.nb_parts > 0 && ext == ".msh") {
+    parts.mesh_fingerprint = partition_fingerprint(data);
+    parts.source_stamp = file_stamp(path);
+  }
   // The placeholder group of our MSH 2.2 output (see write_mesh.h) is not a user's group.
   auto& groups = data.model().groups;
   groups.erase(std::remove_if(groups.begin(), groups.end(),

@@ -1,5 +1,8 @@
 #include "core/io/read_msh_format.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 
 namespace cvtmesh {
@@ -17,6 +20,40 @@ MshFormat read_msh_format(const std::string& path) {
     return f;
   }
   return f;
+}
+
+int read_msh_partition_count(const std::string& path) {
+  const MshFormat format = read_msh_format(path);
+  if (!format.ok || format.version < 4) return 0;
+  // The section comes after $Entities and before $Nodes (MSH 4.1): the head of the file only.
+  std::ifstream in(path, std::ios::binary);
+  std::string head;
+  std::string chunk(1 << 16, '\0');
+  const std::string section = "\n$PartitionedEntities";
+  while (in && head.size() < (std::size_t{64} << 20)) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    head.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    const std::size_t at = head.find(section);
+    if (at != std::string::npos) {
+      in.read(chunk.data(), 64);  // the section's line and the count may straddle the chunk
+      head.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+      std::size_t pos = head.find('\n', at + 1);
+      if (pos == std::string::npos) return 0;
+      ++pos;
+      if (format.binary) {
+        if (head.size() < pos + sizeof(std::uint64_t)) return 0;
+        std::uint64_t n = 0;
+        std::memcpy(&n, head.data() + pos, sizeof n);
+        return n < (1u << 30) ? static_cast<int>(n) : 0;
+      }
+      long n = 0;
+      for (; pos < head.size() && head[pos] >= '0' && head[pos] <= '9'; ++pos)
+        n = std::min(10 * n + (head[pos] - '0'), 1L << 30);
+      return static_cast<int>(n);
+    }
+    if (head.find("\n$Nodes") != std::string::npos) break;
+  }
+  return 0;
 }
 
 }  // namespace cvtmesh

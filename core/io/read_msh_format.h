@@ -13,4 +13,8 @@ struct MshFormat {
 
 MshFormat read_msh_format(const std::string& path);
 
+// The number of parts the $PartitionedEntities section of a MSH 4 file declares (ASCII or
+// binary; a file of a mesh saved one file per part declares them all), 0 if it has none.
+int read_msh_partition_count(const std::string& path);
+
 }  // namespace cvtmesh

@@ -1,5 +1,6 @@
 #include "core/io/write_mesh.h"
 
+#include "core/io/add_curve_point_elements.h"
 #include "core/io/append_msh_periodic.h"
 
 #include <gmsh.h>
@@ -16,10 +17,12 @@
 
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_model.h"
+#include "core/io/gmsh_repartition.h"
 #include "core/io/gmsh_views.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/quality_view_geo.h"
 #include "core/io/read_mesh.h"
+#include "core/io/read_msh_format.h"
 #include "core/io/select_msh_elements.h"
 #include "core/io/tetgen_io.h"
 #include "core/util/error.h"
@@ -46,8 +49,34 @@ std::vector<DataView> views_of(const MeshData& data) {
   return out;
 }
 
-void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::string& target,
-                     const std::string& ext, const WriteOptions& o) {
+// A partitioned .msh input that reaches the writer as it was read, its file unchanged too.
+bool unchanged_partitioned_input(const MeshData& data) {
+  const Partitioning& p = data.model().partitioning;
+  return p.nb_parts > 0 && !p.source_stamp.empty() &&
+         file_stamp(data.model().source) == p.source_stamp &&
+         partition_fingerprint(data) == p.mesh_fingerprint;
+}
+
+// Whether Gmsh reads the file it wrote (into a scratch model, removed again).
+bool gmsh_reads_back(const std::string& path) {
+  std::string current;
+  gmsh::model::getCurrent(current);
+  gmsh::model::add("cvtmesh_read_back");
+  bool ok = true;
+  try {
+    gmsh_checked("read back", [&] { gmsh::merge(path); });
+  } catch (const InputError&) {
+    ok = false;
+  }
+  gmsh::model::remove();
+  gmsh::model::setCurrent(current);
+  return ok;
+}
+
+Repartitioned write_with_gmsh(const MeshData& data, const std::string& tmp,
+                              const std::string& target, const std::string& ext,
+                              const WriteOptions& o) {
+  Repartitioned parted;
   GmshSession session;
   std::string previous;
   gmsh::model::getCurrent(previous);
@@ -60,12 +89,17 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
   };
   try {
     // A .msh holds what Gmsh would save of this model (select_msh_elements.h); per-element data
-    // covers every written element, numbered in file order, as meshio reads it.
+    // covers every written element, numbered in file order, as meshio reads it (a partitioned
+    // output: the cells, by their tags).
     const bool msh = ext == ".msh";
+    const bool partitioned = msh && data.model().partitioning.nb_parts > 0;
     MshSelection selection;
     bool save_all = true;
     std::vector<ElementField> fields;
     std::vector<std::size_t> field_tags;
+    // The input's views (not on a partitioned output: its parts order the file, the note says).
+    const std::vector<DataView> data_views =
+        msh && !partitioned ? views_of(data) : std::vector<DataView>{};
     std::size_t nb_elements = 0;  // with views: every element tagged 1..N in file order
     if (msh) {
       selection = select_msh_elements(data, o.save_all);
@@ -76,21 +110,51 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
                           "2.2 stores groups only as the tags of elements that have one; write "
                           "MSH 4.1 (--msh-version 4.1) or put those entities in a physical group");
       // Per-node and per-element data are read back by position (meshio) as by tag (Gmsh).
-      if (!views_of(data).empty()) {
+      if (!data_views.empty()) {
         nb_elements = number_in_file_order(selection.data);
         number_nodes_in_file_order(selection.data);
       }
-      if (!o.fields.empty()) {
+      if (!o.fields.empty() && !partitioned) {
         const std::size_t n = number_in_file_order(selection.data);
         fields = fields_on_all_elements(selection, o.fields, n);
         for (std::size_t t = 1; t <= n; ++t) field_tags.push_back(t);
       }
     }
-    const GmshWritten written = mesh_to_gmsh(msh ? selection.data : data, "cvtmesh_output");
-    made = true;
-    // The input's views that belong to this mesh: node tags per vertex, element tags per live
-    // simplex of `data` (the selection's cells map back to them by field_index).
-    const std::vector<DataView> data_views = msh ? views_of(data) : std::vector<DataView>{};
+    // A partitioned input: Gmsh partitions the whole mesh (its facets keep the nodes on their
+    // entities: Gmsh moves a node of an entity without elements into a part) and saves what the
+    // selection holds (Mesh.SaveAll as for the selection: the physical groups' elements, which
+    // the partition entities inherit).
+    // A partitioned input whose mesh is unchanged (cvtmesh convert): its file merged and
+    // written again, its own parts kept (METIS would not cut this mesh as the input's file had
+    // it: the graph holds the elements Gmsh had in memory).
+    const bool keep_file = partitioned && unchanged_partitioned_input(data);
+    MeshData full;
+    if (partitioned && !keep_file) {
+      full = data;
+      add_curve_point_elements(full);
+    }
+    GmshWritten written;
+    if (keep_file) {
+      gmsh_checked("cannot read '" + data.model().source + "' again", [&] {
+        gmsh::model::add("cvtmesh_output");
+        made = true;
+        gmsh::merge(data.model().source);
+      });
+      parted.nb_parts = data.model().partitioning.nb_parts;
+      parted.same_as_input = parted.kept_input_file = true;
+      // The cells' tags are the file's.
+      const auto& tags = data.dim == 3 ? data.tet.tet_tags : data.tri.tri_tags;
+      const int npe = data.dim + 1;
+      const auto& cells = data.dim == 3 ? data.tet.tets : data.tri.tris;
+      for (std::size_t c = 0; c < tags.size(); ++c)
+        if (cells[npe * c] >= 0) written.element_tags.push_back(tags[c]);
+    } else {
+      written = mesh_to_gmsh(partitioned ? full : msh ? selection.data : data, "cvtmesh_output");
+      made = true;
+      if (partitioned) parted = repartition_gmsh_model(data.model().partitioning, data.dim);
+    }
+    // The views' cells: element tags per live simplex of `data` (the selection's cells map back
+    // to them by field_index).
     std::vector<std::size_t> cell_tags;
     if (!data_views.empty()) {
       cell_tags.assign(nb_live_cells(data), 0);
@@ -107,13 +171,39 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
         ++k;
       }
     }
+    if (partitioned) {
+      // The fields on the written cells, by their tags (the file's order is the parts').
+      for (const ElementField& f : o.fields) {
+        ElementField g{f.name, {}};
+        field_tags.clear();
+        for (long i : selection.field_index)
+          if (i >= 0 && static_cast<std::size_t>(i) < written.element_tags.size() &&
+              static_cast<std::size_t>(i) < f.values.size()) {
+            field_tags.push_back(written.element_tags[i]);
+            g.values.push_back(f.values[i]);
+          }
+        fields.push_back(std::move(g));
+      }
+    }
     gmsh_checked("cannot write '" + target + "'", [&] {
       gmsh::option::setNumber("Mesh.MshFileVersion", o.msh_version);
       gmsh::option::setNumber("Mesh.Binary", o.binary ? 1 : 0);
       gmsh::option::setNumber("Mesh.SaveAll", save_all ? 1 : 0);
       gmsh::option::setNumber("Mesh.SaveParametric", 0);
       gmsh::write(tmp);
-      if (msh) append_msh_periodic(tmp, data.model().periodic, o.msh_version, o.binary);
+      if (partitioned && o.msh_version < 3 && !gmsh_reads_back(tmp)) {
+        // Gmsh 4.8 rebuilds the parts of an MSH 2.2 file (its partition tags) when it reads it
+        // and fails on some ("No mesh elements were found"): such a file is written unpartitioned
+        // (MSH 2.2 holds no node classification that the unpartitioned mesh would lose).
+        gmsh::model::mesh::unpartition();
+        gmsh::write(tmp);
+        parted = Repartitioned{};
+        parted.unreadable_msh22 = true;
+      }
+      // Gmsh writes the periodic links of a merged MSH 4 file itself (not an MSH 2.2 one's).
+      const bool own_periodic = keep_file && read_msh_format(data.model().source).version >= 3;
+      if (msh && !own_periodic)
+        append_msh_periodic(tmp, data.model().periodic, o.msh_version, o.binary);
       if (msh && (!fields.empty() || !data_views.empty())) {
         // Quality fields first (the .opt shows View[0]), then the input's views.
         if (!fields.empty()) views = add_element_views(fields, field_tags);
@@ -132,6 +222,7 @@ void write_with_gmsh(const MeshData& data, const std::string& tmp, const std::st
     throw;
   }
   cleanup();
+  return parted;
 }
 
 // Runs a writer on temporaries; its errors name the temporary it was given: they are rethrown
@@ -251,25 +342,30 @@ void check_can_write(const std::string& path, const WriteOptions& options) {
   check_directory_writable(path);
 }
 
-void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
+WriteReport write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
+  WriteReport report;
   if (data.dim != 2 && data.dim != 3)
     throw InvariantError("write_mesh: MeshData.dim must be 2 or 3");
   check_can_write(path, options);
   const std::string ext = file_extension(path);
   const MeshWriter* own = find_writer(ext);
+  const Partitioning& parts = data.model().partitioning;
+  Repartitioned parted;
   if (is_tetgen(ext)) {
     write_tetgen_files(data, path, options);
-    return;
+  } else {
+    AtomicFile out(path);
+    name_targets({&out}, [&] {
+      if (own)
+        (*own)(data, out.temp_path(), options.fields);
+      else
+        parted = write_with_gmsh(data, out.temp_path(), path, ext, options);
+    });
+    out.commit();
+    if (ext == ".msh") write_companion_opt(data, path, options);
   }
-  AtomicFile out(path);
-  name_targets({&out}, [&] {
-    if (own)
-      (*own)(data, out.temp_path(), options.fields);
-    else
-      write_with_gmsh(data, out.temp_path(), path, ext, options);
-  });
-  out.commit();
-  if (ext == ".msh") write_companion_opt(data, path, options);
+  if (parts.nb_parts > 0) report.notes.push_back(repartition_note(parts, parted, path));
+  return report;
 }
 
 }  // namespace cvtmesh

@@ -28,9 +28,18 @@ struct WriteOptions {
 // With fields, the $ElementData covers every written element (NaN on those that are not cells of
 // the mesh dimension), elements numbered in file order, and a companion PATH.opt (which Gmsh
 // merges when it opens PATH) shows the first field alone over the range of its values; a stale
-// PATH.opt of ours is removed when writing without fields, a user's own is left alone.
+// PATH.opt of ours is removed when writing without fields, a user's own is left alone. A
+// partitioned output's $ElementData covers its cells only, by their tags (the file's order is the
+// parts').
+// A partitioned input (ModelInfo::partitioning) is written to a .msh partitioned again into as
+// many parts (core/io/gmsh_repartition.h), to other formats unpartitioned; the returned notes say
+// which, for the front ends to print.
 // Throws OutputError (cannot write, refused) or InputError (format cannot hold this mesh).
-void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
+struct WriteReport {
+  std::vector<std::string> notes;
+};
+WriteReport write_mesh(const MeshData& data, const std::string& path,
+                       const WriteOptions& options = {});
 
 // What write_mesh would refuse without looking at the mesh, checked before a long computation:
 // no or unknown extension, per-element data the format cannot hold, the output policy (existing

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,24 @@ enum class ElementOrigin {
   kMeshFile,  // read from a .msh (or another mesh file Gmsh opens): the blocks that file held
 };
 
+// A partitioned input (gmsh -part N, PartitionMesh; MSH 4.1 partition entities or MSH 2.2
+// partition tags): it is read as its model (core/io/gmsh_partition_map.h) and a .msh output is
+// partitioned again as it was (core/io/gmsh_repartition.h).
+struct Partitioning {
+  int nb_parts = 0;          // 0: not partitioned
+  bool ghost_cells = false;  // ghost entities (Mesh.PartitionCreateGhostCells)
+  bool topology = false;     // partition boundary entities (Mesh.PartitionCreateTopology)
+  // The input's cells (tets in 3D, triangles in 2D) by element tag, sorted, and their parts
+  // (1..nb_parts): whether an output kept the input's element-to-part assignment.
+  std::vector<std::size_t> cell_tags;
+  std::vector<int> cell_parts;
+  // A partitioned .msh read unchanged: the mesh as read (partition_fingerprint) and the file's
+  // size and modification time, so that a writer given the same mesh can keep the file's own
+  // parts (cvtmesh convert) instead of cutting it anew.
+  std::uint64_t mesh_fingerprint = 0;
+  std::string source_stamp;
+};
+
 struct ModelInfo {
   std::string name;
   std::string source;                 // path of the file it came from ("" if built in memory)
@@ -77,6 +96,8 @@ struct ModelInfo {
   // The file's post-processing views ($NodeData / $ElementData), each for the mesh it was read or
   // carried onto (DataView::fingerprint).
   std::vector<DataView> views;
+  // A partitioned input: how many parts, and what else its file held (nb_parts 0 otherwise).
+  Partitioning partitioning;
 };
 
 }  // namespace cvtmesh
