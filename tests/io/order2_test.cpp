@@ -69,17 +69,21 @@ int nb_not_positive(const GmshDump& d) {
   return bad;
 }
 
-// Largest distance of a tet10's mid-edge node classified in the volume (dim 3) from its edge's
-// straight midpoint, relative to the edge length.
-double max_interior_offset(const GmshDump& d) {
+// Largest distance of an order-2 element's mid-edge node classified in the interior (dim
+// `interior`) from its edge's straight midpoint, relative to the edge length: Gmsh type 11 (tet10,
+// its 6 edge nodes after the 4 corners) or 9 (tri6, 3 after 3).
+double max_offset(const GmshDump& d, int type, int interior) {
+  static const int kGmshTri6[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  const int nc = type == 11 ? 4 : 3, ne = type == 11 ? 6 : 3;
+  const int(*edge)[2] = type == 11 ? kGmshTet10 : kGmshTri6;
   double worst = 0;
   for (const auto& [tag, e] : d.elements) {
-    if (std::get<0>(e) != 11) continue;
+    if (std::get<0>(e) != type) continue;
     const auto& nd = std::get<3>(e);
-    for (int g = 0; g < 6; ++g) {
-      if (std::get<3>(d.nodes.at(nd[4 + g])) != 3) continue;
-      const auto a = xyz_of(d, nd[kGmshTet10[g][0]]), b = xyz_of(d, nd[kGmshTet10[g][1]]);
-      const auto m = xyz_of(d, nd[4 + g]);
+    for (int g = 0; g < ne; ++g) {
+      if (std::get<3>(d.nodes.at(nd[nc + g])) != interior) continue;
+      const auto a = xyz_of(d, nd[edge[g][0]]), b = xyz_of(d, nd[edge[g][1]]);
+      const auto m = xyz_of(d, nd[nc + g]);
       double off = 0, len = 0;
       for (int k = 0; k < 3; ++k) {
         off += std::pow(m[k] - 0.5 * (a[k] + b[k]), 2);
@@ -89,6 +93,11 @@ double max_interior_offset(const GmshDump& d) {
     }
   }
   return worst;
+}
+
+// The same for the tet10s' nodes in the volume.
+double max_interior_offset(const GmshDump& d) {
+  return max_offset(d, 11, 3);
 }
 
 std::string write_geo(const std::string& dir, const std::string& name, const std::string& body) {
@@ -305,27 +314,9 @@ int nb_tri6_not_positive(const GmshDump& d) {
   return bad;
 }
 
-// Largest distance of a tri6's mid-edge node classified on the surface (dim 2) from its edge's
-// straight midpoint, relative to the edge length.
+// The same for the tri6s' nodes on the surface (a planar mesh's interior).
 double max_planar_interior_offset(const GmshDump& d) {
-  static const int kGmshTri6[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-  double worst = 0;
-  for (const auto& [tag, e] : d.elements) {
-    if (std::get<0>(e) != 9) continue;
-    const auto& nd = std::get<3>(e);
-    for (int g = 0; g < 3; ++g) {
-      if (std::get<3>(d.nodes.at(nd[3 + g])) != 2) continue;
-      const auto a = xyz_of(d, nd[kGmshTri6[g][0]]), b = xyz_of(d, nd[kGmshTri6[g][1]]);
-      const auto m = xyz_of(d, nd[3 + g]);
-      double off = 0, len = 0;
-      for (int k = 0; k < 3; ++k) {
-        off += std::pow(m[k] - 0.5 * (a[k] + b[k]), 2);
-        len += std::pow(a[k] - b[k], 2);
-      }
-      worst = std::max(worst, std::sqrt(off / len));
-    }
-  }
-  return worst;
+  return max_offset(d, 9, 2);
 }
 
 TEST(Order2, PlanarReadAsCornerMeshAndConvertKeepsEveryNode) {
