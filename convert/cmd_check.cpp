@@ -5,6 +5,7 @@
 #include "convert/cli_common.h"
 #include "core/io/place_mid_edge_nodes.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/check_quads2d.h"
 #include "core/pipeline/find_structural_defects.h"
 
 namespace cvtmesh::cli {
@@ -45,6 +46,19 @@ void register_check(CLI::App& app) {
              }
            }
          }
+         // A 2D hybrid mesh's quadrangles: each strictly convex in its surface's turning sense.
+         QuadCheck quads;
+         if (d.dim == 2) {
+           quads = check_quads2d(d.tri);
+           r.ok &= quads.ok();
+           if (quads.nb_inverted)
+             r.problems.push_back(std::to_string(quads.nb_inverted) +
+                                  " quadrangles are inverted (they turn against their surface)");
+           if (quads.nb_not_convex)
+             r.problems.push_back(std::to_string(quads.nb_not_convex) +
+                                  " quadrangles are not convex (a reflex or flat corner)");
+           r.problems.insert(r.problems.end(), quads.problems.begin(), quads.problems.end());
+         }
          // Order 2: every tet10 / tri6 positive as the file places its nodes.
          const bool order2 = d.model().high_order.order == 2;
          if (order2) {
@@ -63,8 +77,11 @@ void register_check(CLI::App& app) {
          }
          if (r.ok) {
            std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "") << n
-                     << (d.dim == 3 ? " tetrahedra" : " triangles") << ", "
-                     << (d.dim == 3 ? d.tet.nb_vertices() : d.tri.nb_vertices()) << " vertices)\n";
+                     << (d.dim == 3 ? " tetrahedra" : " triangles")
+                     << (quads.nb_quads ? ", " + std::to_string(quads.nb_quads) + " quadrangles"
+                                        : std::string())
+                     << ", " << (d.dim == 3 ? d.tet.nb_vertices() : d.tri.nb_vertices())
+                     << " vertices)\n";
            return 0;
          }
          std::cout << in->path << ": INVALID\n";

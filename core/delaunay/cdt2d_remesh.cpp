@@ -35,9 +35,34 @@ void cdt2d_remesh(TriMesh2& mesh) {
       }
     }
   }
-  Cdt2dResult r = cdt2d(mesh.xy, mesh.edges);
+  // Only the vertices of the triangles and constrained edges: a hybrid or free-curve mesh's
+  // vertices of no triangle (kept quadrangles', free curves') stay out of the triangulation.
+  const int nv = mesh.nb_vertices();
+  std::vector<int> local(static_cast<std::size_t>(nv), -1), global;
+  auto use = [&](int v) {
+    if (local[v] < 0) local[v] = static_cast<int>(global.size()), global.push_back(v);
+  };
+  for (int v : mesh.tris)
+    if (v >= 0) use(v);
+  for (int v : mesh.edges) use(v);
+  const bool all = static_cast<int>(global.size()) == nv;
+  std::vector<double> sub_xy;
+  std::vector<int> sub_edges;
+  if (!all) {
+    sub_xy.reserve(2 * global.size());
+    for (int v : global) sub_xy.insert(sub_xy.end(), mesh.point(v), mesh.point(v) + 2);
+    sub_edges.reserve(mesh.edges.size());
+    for (int v : mesh.edges) sub_edges.push_back(local[v]);
+  }
+  Cdt2dResult r = all ? cdt2d(mesh.xy, mesh.edges) : cdt2d(sub_xy, sub_edges);
   if (r.segments.size() != mesh.edges.size())
     throw InputError("cdt2d_remesh: a vertex lies on a constrained edge");
+  if (!all) {
+    // Back to the mesh's ids (the super-triangle's vertices are in no kept triangle).
+    const int n = static_cast<int>(global.size());
+    for (int& v : r.tris) v = v < n ? global[v] : nv + (v - n);
+    for (int& v : r.segments) v = global[v];
+  }
 
   // Surface of each enclosed part, from its constrained edges; -1 = hole.
   const int nt = static_cast<int>(r.tris.size() / 3);

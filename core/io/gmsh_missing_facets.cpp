@@ -149,22 +149,26 @@ long add_missing_facets(int dim) {
     const bool model = d < 0 || parts.element_owner(d, t).first >= 0;
     for (std::size_t k = 0; k < types.size(); ++k) {
       for (std::size_t tag : etags[k]) max_tag = std::max(max_tag, tag);
-      if (!model || (types[k] != facet_type && types[k] != facet_type2)) continue;
+      // In 2D, a triangle edge on a quadrangle (a hybrid mesh: kept_quads.h) is no missing
+      // line: the quadrangle is kept, and that edge constrained (constrain_kept_quad_edges.h).
+      const bool quad = dim == 2 && types[k] == 3;
+      if (!model || (types[k] != facet_type && types[k] != facet_type2 && !quad)) continue;
       const std::size_t nn = enodes[k].size() / std::max<std::size_t>(etags[k].size(), 1);
-      for (std::size_t e = 0; e < etags[k].size(); ++e) {
-        std::uint32_t key[3] = {0, 0, 0};
-        bool known = true;
-        for (int j = 0; j < npf; ++j) {
-          key[j] = ids.find(enodes[k][nn * e + j]);
-          known &= key[j] != DenseIds::kNone;
+      for (std::size_t e = 0; e < etags[k].size(); ++e)
+        for (int side = 0; side < (quad ? 4 : 1); ++side) {
+          std::uint32_t key[3] = {0, 0, 0};
+          bool known = true;
+          for (int j = 0; j < npf; ++j) {
+            key[j] = ids.find(enodes[k][nn * e + (quad ? (side + j) % 4 : j)]);
+            known &= key[j] != DenseIds::kNone;
+          }
+          if (!known) continue;
+          std::sort(key, key + npf);
+          const FaceRecord probe{key[1], npf == 3 ? key[2] : 0, 0};
+          auto first = sorted.begin() + start[key[0]], last = sorted.begin() + start[key[0] + 1];
+          auto it = std::lower_bound(first, last, probe);
+          if (it != last && same_face(*it, probe)) present[it - sorted.begin()] = 1;
         }
-        if (!known) continue;
-        std::sort(key, key + npf);
-        const FaceRecord probe{key[1], npf == 3 ? key[2] : 0, 0};
-        auto first = sorted.begin() + start[key[0]], last = sorted.begin() + start[key[0] + 1];
-        auto it = std::lower_bound(first, last, probe);
-        if (it != last && same_face(*it, probe)) present[it - sorted.begin()] = 1;
-      }
     }
   }
   // The facets on the boundary (one cell) or between two entities, not elements yet.

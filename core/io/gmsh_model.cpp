@@ -22,6 +22,9 @@
 #include "core/io/tag_index.h"
 #include "core/mesh/keep_loose_triangles.h"
 #include "core/mesh/constrain_kept_cell_faces.h"
+#include "core/mesh/constrain_kept_quad_edges.h"
+#include "core/mesh/keep_free_curve_lines.h"
+#include "core/mesh/kept_quads.h"
 #include "core/mesh/build_adjacency.h"
 #include "core/mesh/check_mesh.h"
 #include "core/util/error.h"
@@ -369,9 +372,10 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         }
         const auto& nd = type != el.types[k] ? corners : el.enodes[k];
         // Hybrid meshes: hexahedra (5), prisms (6), pyramids (7) in a volume and quadrangles
-        // (3) on a surface are kept verbatim; optimize() fixes their vertices.
-        const bool kept_type = dim == 3 && ((d == 3 && (type == 5 || type == 6 || type == 7)) ||
-                                            (d == 2 && type == 3));
+        // (3) on a surface, in 3D and in 2D (kept_quads.h), are kept verbatim; optimize() fixes
+        // their vertices (and smooths a 2D mesh's quadrangles).
+        const bool kept_type =
+            (d == 2 && type == 3) || (dim == 3 && d == 3 && (type == 5 || type == 6 || type == 7));
         if (kept_type && order2)
           throw InputError(what + ": '" + type_name(type) + "' elements in an order-2 mesh " +
                            "(volume / surface " + std::to_string(t) +
@@ -559,7 +563,12 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       for (int t = 0; t < m.nb_tris(); ++t)
         if (std::binary_search(m.cw_surfaces.begin(), m.cw_surfaces.end(), m.tri_region[t]))
           std::swap(m.tris[3 * t + 1], m.tris[3 * t + 2]);
+      // 2D hybrid meshes and free curves: lines on no triangle kept verbatim, quadrangles'
+      // surfaces oriented, their edges towards triangles constrained.
+      keep_free_curve_lines(m);
+      orient_quad_surfaces(m);
       build_adjacency2(m);
+      constrain_kept_quad_edges(m);
       const MeshCheck c = check_mesh(m);
       if (!c.ok) throw InputError(what + ": invalid triangle mesh: " + check_summary(c));
     }
@@ -599,12 +608,14 @@ void complete_model_info(MeshData& data) {
   } else {
     TriMesh2& m = data.tri;
     for (int r : m.tri_region) ensure(2, r);
-    for (int c : m.edge_curve) ensure(1, c);
+    for (int c : m.edge_curve)
+      if (!is_kept_cell_interface(c)) ensure(1, c);
     if (m.vclass.size() != static_cast<std::size_t>(m.nb_vertices()))
       m.vclass.assign(m.nb_vertices(), {2, 0});
     for (int e = 0; e < m.nb_edges(); ++e)
       for (int k = 0; k < 2; ++k) {
         VertexClass& c = m.vclass[m.edges[2 * e + k]];
+        if (is_kept_cell_interface(m.edge_curve[e])) continue;
         if (c.entity == 0 || c.dim == 2) c = {1, m.edge_curve[e]};
       }
     for (int t = 0; t < m.nb_tris(); ++t)

@@ -4,6 +4,29 @@
 
 namespace cvtmesh {
 
+namespace {
+
+int pin_marked(std::vector<VertexClass>& vclass, const std::vector<char>& pin) {
+  int n = 0;
+  for (std::size_t v = 0; v < vclass.size(); ++v) {
+    VertexClass& c = vclass[v];
+    if (!pin[v] || c.entity < 0) continue;
+    c = VertexClass{0, -1 - (4 * c.entity + c.dim)};
+    ++n;
+  }
+  return n;
+}
+
+void unpin_marked(std::vector<VertexClass>& vclass) {
+  for (VertexClass& c : vclass)
+    if (c.entity < 0) {
+      const int x = -1 - c.entity;
+      c = VertexClass{static_cast<std::int8_t>(x % 4), x / 4};
+    }
+}
+
+}  // namespace
+
 int pin_vertices(TetMesh& m) {
   std::vector<char> pin(m.nb_vertices(), 0);
   // Points and lines (Gmsh's curves, dim < 2) lie on the boundary's corners and curves, which the
@@ -23,22 +46,23 @@ int pin_vertices(TetMesh& m) {
     for (int v = 0; v < m.nb_vertices(); ++v)
       if (periodic.count(m.node_tags[v])) pin[v] = 1;
   }
-  int n = 0;
-  for (int v = 0; v < m.nb_vertices(); ++v) {
-    VertexClass& c = m.vclass[v];
-    if (!pin[v] || c.entity < 0) continue;
-    c = VertexClass{0, -1 - (4 * c.entity + c.dim)};
-    ++n;
-  }
-  return n;
+  return pin_marked(m.vclass, pin);
 }
 
 void unpin_vertices(TetMesh& m) {
-  for (VertexClass& c : m.vclass)
-    if (c.entity < 0) {
-      const int x = -1 - c.entity;
-      c = VertexClass{static_cast<std::int8_t>(x % 4), x / 4};
-    }
+  unpin_marked(m.vclass);
+}
+
+int pin_vertices(TriMesh2& m) {
+  std::vector<char> pin(m.nb_vertices(), 0), on_edge(m.nb_vertices(), 0);
+  for (int v : m.edges) on_edge[v] = 1;
+  for (const ElementBlock& b : m.model.extra)
+    for (int v : b.nodes) pin[v] |= b.dim >= 2 || !on_edge[v];
+  return pin_marked(m.vclass, pin);
+}
+
+void unpin_vertices(TriMesh2& m) {
+  unpin_marked(m.vclass);
 }
 
 }  // namespace cvtmesh

@@ -6,11 +6,17 @@
 // their classification (after any vertex permutation: the mark travels with the vertex).
 #pragma once
 #include "core/mesh/tet_mesh.h"
+#include "core/mesh/tri_mesh2.h"
 
 namespace cvtmesh {
 
 // Returns the number of vertices pinned.
 int pin_vertices(TetMesh& mesh);
 void unpin_vertices(TetMesh& mesh);
+
+// The same for a planar mesh: the vertices of its kept quadrangles, and those of its kept lines
+// and points that are on no constrained edge (a free curve's; keep_free_curve_lines.h).
+int pin_vertices(TriMesh2& mesh);
+void unpin_vertices(TriMesh2& mesh);
 
 }  // namespace cvtmesh

@@ -39,6 +39,9 @@
 #include "core/mesh/extract_regions.h"
 #include "core/mesh/merge_regions.h"
 #include "core/mesh/pin_vertices.h"
+#include "core/mesh/check_quads2d.h"
+#include "core/mesh/kept_quads.h"
+#include "core/smoothing/smooth_quads2d.h"
 #include "core/pipeline/select_regions.h"
 #include "core/pipeline/find_structural_defects.h"
 #include "core/quality/quality.h"
@@ -937,7 +940,7 @@ std::string restore_failed(const RestoreNote& rn) {
 // 2D: optimize_2d; where the result is worse than the input, the vertices around the elements
 // short of the input's worst go back to their input positions (restore_worse_regions), and the
 // input is kept if that is not enough.
-OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& options) {
+OptimizeResult optimize_2d_triangles(TriMesh2& mesh, const OptimizeOptions& options) {
   const TriMesh2 input = mesh;
   OptimizeResult r = optimize_2d(mesh, options);
   if (!options.never_worse) return r;
@@ -958,6 +961,56 @@ OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& optio
   r.kept_input = true;
   r.after = r.before;
   r.after.label = label;
+  return r;
+}
+
+// 2D, with hybrid meshes and free curves: the vertices of the kept quadrangles, lines and points
+// pinned while the triangles are optimized (optimize_2d_triangles; a mesh without triangles
+// skips it), then the quadrangles smoothed (smooth_quads2d: never worse, both sides of an
+// interface checked) and the result checked.
+OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& options) {
+  const KeptQuads quads = kept_quads(mesh);
+  long nb_lines = 0;
+  for (const ElementBlock& b : mesh.model.extra)
+    if (b.dim == 1) nb_lines += static_cast<long>(b.tags.size());
+  pin_vertices(mesh);
+  OptimizeResult r;
+  if (mesh.nb_tris() > 0) {
+    r = optimize_2d_triangles(mesh, options);
+  } else {
+    const auto t0 = std::chrono::steady_clock::now();
+    r.method = resolve(options, 2).method;
+    r.before = quality_stats(mesh, "before");
+    r.after = quality_stats(mesh, r.method);
+    r.converged = true;
+    r.kept_input = true;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  unpin_vertices(mesh);
+  if (nb_lines > 0)
+    r.notes.push_back(std::to_string(nb_lines) +
+                      " lines of curves bounding no triangle (free curves, curves of "
+                      "quadrangles only) kept unchanged, their nodes fixed");
+  if (quads.nb_quads() == 0) return r;
+  const auto t0 = std::chrono::steady_clock::now();
+  const QuadCheck qc_before = check_quads2d(mesh);
+  const SmoothQuads2dStats qs = smooth_quads2d(mesh);
+  const QuadCheck qc_after = check_quads2d(mesh);
+  const MeshCheck mc = check_mesh(mesh);
+  if (!mc.ok || qc_after.nb_inverted + qc_after.nb_not_convex >
+                    qc_before.nb_inverted + qc_before.nb_not_convex)
+    throw InvariantError("the quadrangle smoothing broke the mesh: " +
+                         (mc.ok ? qc_after.problems.front() : mc.problems.front()));
+  r.after = quality_stats(mesh, r.after.label);
+  if (qs.nb_moves > 0) r.kept_input = false;
+  r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.notes.push_back(std::to_string(quads.nb_quads()) +
+                    (mesh.nb_tris() > 0 ? " quadrangles kept, their vertices fixed while the "
+                                          "triangles were optimized, then smoothed: "
+                                        : " quadrangles smoothed: ") +
+                    std::to_string(qs.nb_moves) + " moves of their " + std::to_string(qs.nb_free) +
+                    " free vertices in " + std::to_string(qs.passes) +
+                    " passes (no quadrangle or triangle worse)");
   return r;
 }
 

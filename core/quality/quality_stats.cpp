@@ -4,6 +4,10 @@
 #include <array>
 #include <limits>
 
+#include "core/mesh/kept_quads.h"
+#include "core/quality/quad_angles.h"
+#include "core/quality/quad_scaled_jacobian.h"
+
 namespace cvtmesh {
 namespace {
 
@@ -208,10 +212,31 @@ double min_quality(const TriMesh2& mesh, Measure m) {
 }
 
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {
-  return quality_stats_from_values(element_qualities(mesh, Measure::kQ),
-                                   element_qualities(mesh, Measure::kRadiusRatio),
-                                   element_qualities(mesh, Measure::kMinAngle),
-                                   element_qualities(mesh, Measure::kMaxAngle), 2, label);
+  QualityStats s = quality_stats_from_values(element_qualities(mesh, Measure::kQ),
+                                             element_qualities(mesh, Measure::kRadiusRatio),
+                                             element_qualities(mesh, Measure::kMinAngle),
+                                             element_qualities(mesh, Measure::kMaxAngle), 2, label);
+  // A hybrid mesh's kept quadrangles (kept_quads.h): their rows after the triangles'.
+  const KeptQuads q = kept_quads(mesh);
+  if (q.nb_quads() == 0) return s;
+  double sj_min = std::numeric_limits<double>::infinity(), sj_sum = 0, a_min = 360, a_max = 0;
+  for (int k = 0; k < q.nb_quads(); ++k) {
+    const int* v = &q.quads[4 * k];
+    const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]),
+                 *d = mesh.point(v[3]);
+    const double sj = quad_scaled_jacobian(a, b, c, d);
+    sj_min = std::min(sj_min, sj);
+    sj_sum += sj;
+    const QuadAngles qa = quad_angles(a, b, c, d);
+    a_min = std::min(a_min, qa.min);
+    a_max = std::max(a_max, qa.max);
+  }
+  s.extra.push_back({"quadrangles", static_cast<double>(q.nb_quads())});
+  s.extra.push_back({"quad scaled Jacobian min", sj_min});
+  s.extra.push_back({"quad scaled Jacobian avg", sj_sum / q.nb_quads()});
+  s.extra.push_back({"quad minimum angle", a_min});
+  s.extra.push_back({"quad maximum angle", a_max});
+  return s;
 }
 
 }  // namespace cvtmesh
