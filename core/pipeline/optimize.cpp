@@ -1009,8 +1009,9 @@ OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& optio
                                           "triangles were optimized, then smoothed: "
                                         : " quadrangles smoothed: ") +
                     std::to_string(qs.nb_moves) + " moves of their " + std::to_string(qs.nb_free) +
-                    " free vertices in " + std::to_string(qs.passes) +
-                    " passes (no quadrangle or triangle worse)");
+                    " free vertices in " + std::to_string(qs.passes) + " passes" +
+                    (qs.sum_guarded ? ", every move keeping its star's average" : "") +
+                    " (no quadrangle or triangle row worse)");
   return r;
 }
 

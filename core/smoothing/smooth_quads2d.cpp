@@ -24,7 +24,7 @@ constexpr double kGain = 1e-9, kSumGain = 1e-6;
 struct StarMeasure {
   bool valid = false;
   double sj_min = 0, sj_sum = 0, qa_min = 360, qa_max = 0;  // quadrangles
-  double tq_min = 2, ta_min = 180, ta_max = 0;              // triangles
+  double tq_min = 2, tq_sum = 0, ta_min = 180, ta_max = 0;  // triangles
 };
 
 // A vertex's elements: the quadrangles (k >= 0) and triangles (-1 - t).
@@ -191,7 +191,9 @@ class QuadSmoother {
         s.qa_max = std::max(s.qa_max, qa.max);
       } else {
         if (orient2d(a, b, c) <= 0) s.valid = false;
-        s.tq_min = std::min(s.tq_min, tri_quality(a, b, c, 2, Measure::kQ));
+        const double q = tri_quality(a, b, c, 2, Measure::kQ);
+        s.tq_min = std::min(s.tq_min, q);
+        s.tq_sum += q;
         s.ta_min = std::min(s.ta_min, tri_quality(a, b, c, 2, Measure::kMinAngle));
         s.ta_max = std::max(s.ta_max, tri_quality(a, b, c, 2, Measure::kMaxAngle));
       }
@@ -199,10 +201,13 @@ class QuadSmoother {
     return s;
   }
 
-  static bool accepted(const StarMeasure& o, const StarMeasure& n) {
+  bool accepted(const StarMeasure& o, const StarMeasure& n) const {
     if (!n.valid) return false;
-    if (n.sj_min < o.sj_min || n.qa_min < o.qa_min || n.qa_max > o.qa_max) return false;
-    if (n.tq_min < o.tq_min || n.ta_min < o.ta_min || n.ta_max > o.ta_max) return false;
+    if (n.sj_min < o.sj_min || (o_.guard_sum && n.sj_sum < o.sj_sum) || n.qa_min < o.qa_min ||
+        n.qa_max > o.qa_max)
+      return false;
+    if (n.tq_min < o.tq_min || n.tq_sum < o.tq_sum || n.ta_min < o.ta_min || n.ta_max > o.ta_max)
+      return false;
     return n.sj_min > o.sj_min + kGain || n.sj_sum > o.sj_sum + kSumGain;
   }
 
@@ -220,11 +225,19 @@ class QuadSmoother {
   std::vector<char> old_convex_;
 };
 
-}  // namespace
+// The sum of the quadrangles' scaled Jacobians, in kept_quads order (quality_stats's).
+double sum_scaled_jacobians(const TriMesh2& m) {
+  const KeptQuads q = kept_quads(m);
+  double sum = 0;
+  for (int k = 0; k < q.nb_quads(); ++k) {
+    const int* v = &q.quads[4 * k];
+    sum += quad_scaled_jacobian(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+  }
+  return sum;
+}
 
-SmoothQuads2dStats smooth_quads2d(TriMesh2& mesh, const SmoothQuads2dOptions& options) {
+SmoothQuads2dStats run_passes(TriMesh2& mesh, const SmoothQuads2dOptions& options) {
   SmoothQuads2dStats st;
-  if (kept_quads(mesh).nb_quads() == 0) return st;
   QuadSmoother s(mesh, options);
   st.nb_free = static_cast<int>(s.free_vertices().size());
   // A vertex is tried again in the next pass only if it or a vertex of its star moved.
@@ -243,6 +256,25 @@ SmoothQuads2dStats smooth_quads2d(TriMesh2& mesh, const SmoothQuads2dOptions& op
     if (moved == 0) break;
   }
   return st;
+}
+
+}  // namespace
+
+SmoothQuads2dStats smooth_quads2d(TriMesh2& mesh, const SmoothQuads2dOptions& options) {
+  if (kept_quads(mesh).nb_quads() == 0) return {};
+  if (options.guard_sum) return run_passes(mesh, options);
+  const double before = sum_scaled_jacobians(mesh);
+  TriMesh2 trial = mesh;
+  const SmoothQuads2dStats st = run_passes(trial, options);
+  if (sum_scaled_jacobians(trial) >= before) {
+    mesh = std::move(trial);
+    return st;
+  }
+  SmoothQuads2dOptions guarded = options;
+  guarded.guard_sum = true;
+  SmoothQuads2dStats g = run_passes(mesh, guarded);
+  g.sum_guarded = true;
+  return g;
 }
 
 }  // namespace cvtmesh

@@ -11,13 +11,17 @@
 // lower) and every triangle of the star positive (exact orient2d): a vertex shared by triangles
 // and quadrangles checks both sides.
 // accept: over the star's quadrangles, the minimum scaled Jacobian and the minimum angle do not
-// fall and the maximum angle does not rise; over its triangles, the minimum Q and angle do not
+// fall and the maximum angle does not rise (with guard_sum, nor does the sum of their scaled
+// Jacobians fall); over its triangles, the minimum and the sum of Q and the minimum angle do not
 // fall and the maximum angle does not rise; and the star's minimum scaled Jacobian rises (by
-// more than 1e-9), or it does not fall and their sum rises (by more than 1e-6).
+// more than 1e-9), or their sum does (by more than 1e-6). The quadrangles' average scaled
+// Jacobian must not end below the input's: a run that ends below it is made again with
+// guard_sum.
 // apply: the vertex's coordinates; connectivity never changes.
-// So the mesh's minimum quadrangle scaled Jacobian and angles and its triangles' minimum Q and
-// angles are never worse than before. Serial, in vertex order: the result depends on the input
-// only. After the first pass, only the vertices of the stars that changed are tried again.
+// So none of the mesh's quality rows (quadrangles: minimum and average scaled Jacobian, minimum
+// and maximum angle; triangles: minimum and average Q, minimum and maximum angle) gets worse.
+// Serial, in vertex order: the result depends on the input only. After the first pass, only the
+// vertices of the stars that changed are tried again.
 #pragma once
 #include "core/mesh/tri_mesh2.h"
 
@@ -26,12 +30,16 @@ namespace cvtmesh {
 struct SmoothQuads2dOptions {
   int max_passes = 20;  // sweeps over the free vertices; stops earlier when none moves
   int compass_halvings = 6;
+  // Also refuse a move that lowers the sum of its star's scaled Jacobians. Without it (the
+  // default), a run whose average scaled Jacobian ends below the input's is made again with it.
+  bool guard_sum = false;
 };
 
 struct SmoothQuads2dStats {
   int nb_free = 0;    // free vertices of the quadrangles
   long nb_moves = 0;  // accepted moves, over all passes
   int passes = 0;
+  bool sum_guarded = false;  // the run was made again with guard_sum
 };
 
 // mesh: a valid planar mesh (check_mesh), its vertices not pinned (pin_vertices.h: a pinned

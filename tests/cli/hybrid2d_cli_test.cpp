@@ -53,6 +53,9 @@ std::string optimize(const std::string& in) {
 struct Measured {
   long nb_tris = 0, nb_quads = 0, nb_bad_tris = 0, nb_bad_quads = 0;
   double area = 0, sj_min = std::numeric_limits<double>::infinity(), tq_min = 2;
+  double sj_sum = 0, tq_sum = 0;
+  double sj_avg() const { return sj_sum / nb_quads; }
+  double tq_avg() const { return tq_sum / nb_tris; }
 };
 
 Measured measure(const GmshDump& d) {
@@ -79,12 +82,14 @@ Measured measure(const GmshDump& d) {
     if (type == 2) {
       ++m.nb_tris;
       m.nb_bad_tris += orient2d(p[0].data(), p[1].data(), p[2].data()) <= 0;
-      m.tq_min =
-          std::min(m.tq_min, tri_quality(p[0].data(), p[1].data(), p[2].data(), 2, Measure::kQ));
+      const double q = tri_quality(p[0].data(), p[1].data(), p[2].data(), 2, Measure::kQ);
+      m.tq_min = std::min(m.tq_min, q);
+      m.tq_sum += q;
       m.area += 0.5 * orient2d(p[0].data(), p[1].data(), p[2].data());
     } else {
       ++m.nb_quads;
       m.nb_bad_quads += !quad_strictly_convex(p[0].data(), p[1].data(), p[2].data(), p[3].data());
+      m.sj_sum += quad_scaled_jacobian(p[0].data(), p[1].data(), p[2].data(), p[3].data());
       m.sj_min = std::min(m.sj_min,
                           quad_scaled_jacobian(p[0].data(), p[1].data(), p[2].data(), p[3].data()));
       m.area += 0.5 * (orient2d(p[0].data(), p[1].data(), p[2].data()) +
@@ -155,6 +160,7 @@ TEST(Hybrid2dCli, AllQuadrangleMeshIsSmoothedNeverWorseWithEverythingKept) {
   const Measured mb = measure(b);
   EXPECT_EQ(mb.nb_bad_quads, 0);
   EXPECT_GE(mb.sj_min, ma.sj_min);
+  EXPECT_GE(mb.sj_avg(), ma.sj_avg() - 1e-12);
   EXPECT_GT(moved, 0) << "the quadrangles were not optimized";
   EXPECT_NEAR(mb.area, ma.area, 1e-12 * ma.area);
 }
@@ -192,6 +198,8 @@ TEST(Hybrid2dCli, TrianglesAndQuadranglesNeverOverlapAndNeitherGetsWorse) {
     EXPECT_EQ(mb.nb_bad_quads, 0);
     EXPECT_GE(mb.sj_min, ma.sj_min);
     EXPECT_GE(mb.tq_min, ma.tq_min);
+    EXPECT_GE(mb.sj_avg(), ma.sj_avg() - 1e-12);
+    EXPECT_GE(mb.tq_avg(), ma.tq_avg() - 1e-12);
     EXPECT_NEAR(mb.area, ma.area, 1e-12 * ma.area);
   }
 }
