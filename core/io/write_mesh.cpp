@@ -365,6 +365,23 @@ WriteReport write_mesh(const MeshData& data, const std::string& path, const Writ
     if (ext == ".msh") write_companion_opt(data, path, options);
   }
   if (parts.nb_parts > 0) report.notes.push_back(repartition_note(parts, parted, path));
+  // Our own writers (and TetGen's files) hold the simplices and their constrained facets: the
+  // elements kept verbatim from the input (a hybrid mesh's quadrangles and other cells, a planar
+  // mesh's lines on no triangle) are not in them; Gmsh's writers keep them.
+  if (own || is_tetgen(ext)) {
+    long dropped = 0;
+    for (const ElementBlock& b : data.model().extra)
+      if (b.dim >= data.dim - 1 && b.medit_refs.empty())
+        dropped += static_cast<long>(b.tags.size());
+    if (dropped > 0)
+      report.notes.push_back(
+          std::to_string(dropped) +
+          " elements kept from the input (quadrangles, prisms, pyramids, "
+          "hexahedra, surfaces or curves bounding no cell) are not written to '" +
+          path + "': its " + ext +
+          " writer holds the triangles or tetrahedra and their boundary only; "
+          "write a .msh (or a format Gmsh writes) to keep them");
+  }
   return report;
 }
 
