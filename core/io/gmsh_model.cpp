@@ -107,6 +107,15 @@ const std::vector<std::pair<int, int>>& mid_edge_table(int type) {
   return type == 8 ? line3 : type == 9 ? tri6 : type == 11 ? tet10 : none;
 }
 
+// The order-2 hexahedra (12: 27 nodes, 17: 20), prisms (13: 18, 18: 15) and pyramids (14: 14,
+// 19: 13) of a volume, quadrangles (10: 9, 16: 8) of a surface: kept verbatim in an order-2
+// tet mesh.
+bool is_order2_kept_type(int d, int type) {
+  return (d == 3 &&
+          (type == 12 || type == 13 || type == 14 || type == 17 || type == 18 || type == 19)) ||
+         (d == 2 && (type == 10 || type == 16));
+}
+
 // For a high-order element: what to do instead.
 std::string order_hint(int type) {
   if (type_order(type) <= 1) return "";
@@ -376,6 +385,20 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         // their vertices (and smooths a 2D mesh's quadrangles).
         const bool kept_type =
             (d == 2 && type == 3) || (dim == 3 && d == 3 && (type == 5 || type == 6 || type == 7));
+        // Their order-2 kinds in an order-2 3D mesh (hex27/20, prism18/15, pyramid14/13; quad9/8
+        // on a surface) likewise, with all their nodes: every one a vertex (pinned), the ones on
+        // edges they share with tet10s those tet10s' mid-edge nodes too.
+        const bool kept_order2 = dim == 3 && order2 && is_order2_kept_type(d, type);
+        if (kept_order2) {
+          ElementBlock b;
+          b.dim = d;
+          b.entity = t;
+          b.gmsh_type = type;
+          b.tags = tg;
+          for (std::size_t n : nd) b.nodes.push_back(vid(n));
+          info.extra.push_back(std::move(b));
+          continue;
+        }
         if (kept_type && order2)
           throw InputError(what + ": '" + type_name(type) + "' elements in an order-2 mesh " +
                            "(volume / surface " + std::to_string(t) +
@@ -689,13 +712,20 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
   const auto ntags = node_tags_for(dim == 3 ? data.tet.node_tags : data.tri.node_tags, nv, floor);
   w.node_tags = ntags;
   // Mid-edge node tags: the input's where the edge is the input's, fresh ones above every other.
+  // A mid-edge node that is a vertex too (a node of an order-2 kept cell, prism18 say, on an edge
+  // it shares with tet10s: pinned, its edge's corners too) is that vertex, written once.
   std::vector<std::size_t> mid_tags(mid.tags.size());
+  std::vector<char> mid_is_vertex(mid.tags.size(), 0);
   if (order2) {
-    std::set<std::size_t> taken(ntags.begin(), ntags.end());
+    const std::set<std::size_t> vertex_tags(ntags.begin(), ntags.end());
+    std::set<std::size_t> taken = vertex_tags;
     std::size_t next = floor + 1;
     for (std::size_t t : ntags) next = std::max(next, t + 1);
-    for (std::size_t k = 0; k < mid.tags.size(); ++k)
-      mid_tags[k] = mid.tags[k] && taken.insert(mid.tags[k]).second ? mid.tags[k] : 0;
+    for (std::size_t k = 0; k < mid.tags.size(); ++k) {
+      mid_is_vertex[k] = mid.tags[k] && vertex_tags.count(mid.tags[k]);
+      mid_tags[k] =
+          mid_is_vertex[k] || (mid.tags[k] && taken.insert(mid.tags[k]).second) ? mid.tags[k] : 0;
+    }
     for (std::size_t k = 0; k < mid.tags.size(); ++k)
       if (!mid_tags[k]) mid_tags[k] = next++;
   }
@@ -730,6 +760,7 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
     }
   }
   for (std::size_t k = 0; k < mid.tags.size(); ++k) {
+    if (mid_is_vertex[k]) continue;
     auto& [tags, xyz] = per_entity[{mid.where[k].dim, mid.where[k].entity}];
     tags.push_back(mid_tags[k]);
     xyz.insert(xyz.end(), &mid.xyz[3 * k], &mid.xyz[3 * k] + 3);

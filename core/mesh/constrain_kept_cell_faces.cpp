@@ -16,14 +16,28 @@ int constrain_kept_cell_faces(TetMesh& m) {
   for (const ElementBlock& b : m.model.extra) {
     if (b.dim != 3) continue;
     any = true;
-    const int npe = b.gmsh_type == 5 ? 8 : b.gmsh_type == 6 ? 6 : b.gmsh_type == 7 ? 5 : 0;
+    // The order-2 kinds (hexahedron 27 / 20, prism 18 / 15, pyramid 14 / 13 nodes) have the
+    // same corners first.
+    const int type = b.gmsh_type;
+    const int linear = type == 12 || type == 17   ? 5
+                       : type == 13 || type == 18 ? 6
+                       : type == 14 || type == 19 ? 7
+                                                  : type;
+    const int npe = linear == 5 ? 8 : linear == 6 ? 6 : linear == 7 ? 5 : 0;
+    const int stride = type == 12   ? 27
+                       : type == 17 ? 20
+                       : type == 13 ? 18
+                       : type == 18 ? 15
+                       : type == 14 ? 14
+                       : type == 19 ? 13
+                                    : npe;
     if (!npe) continue;
-    for (std::size_t e = 0; e + npe <= b.nodes.size(); e += npe) {
+    for (std::size_t e = 0; e + stride <= b.nodes.size(); e += stride) {
       const int* n = &b.nodes[e];
       for (int k = 0; k < npe; ++k) cell_vertex[n[k]] = 1;
-      if (b.gmsh_type == 6)
+      if (linear == 6)
         for (const auto& f : kPrism) cell_faces.insert(face_key(n[f[0]], n[f[1]], n[f[2]]));
-      if (b.gmsh_type == 7)
+      if (linear == 7)
         for (const auto& f : kPyramid) cell_faces.insert(face_key(n[f[0]], n[f[1]], n[f[2]]));
     }
   }
