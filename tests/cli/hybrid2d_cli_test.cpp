@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/geometry/predicates.h"
 #include "core/io/read_mesh.h"
 #include "core/mesh/check_quads2d.h"
@@ -163,6 +165,17 @@ TEST(Hybrid2dCli, AllQuadrangleMeshIsSmoothedNeverWorseWithEverythingKept) {
   EXPECT_GE(mb.sj_avg(), ma.sj_avg() - 1e-12);
   EXPECT_GT(moved, 0) << "the quadrangles were not optimized";
   EXPECT_NEAR(mb.area, ma.area, 1e-12 * ma.area);
+  // `stats` gives the quadrangle rows this test measures on its own.
+  std::string out;
+  ASSERT_EQ(
+      testing::run(testing::cli_path() + " stats --format json " + dir + "/t11_opt.msh 2>/dev/null",
+                   &out),
+      0)
+      << out;
+  const nlohmann::json j = nlohmann::json::parse(out.substr(out.find('{')));
+  EXPECT_EQ(j.at("quadrangles").get<double>(), static_cast<double>(mb.nb_quads));
+  EXPECT_NEAR(j.at("quad scaled Jacobian min").get<double>(), mb.sj_min, 1e-12);
+  EXPECT_NEAR(j.at("quad scaled Jacobian avg").get<double>(), mb.sj_avg(), 1e-12);
 }
 
 // Two surfaces sharing curve 2, the left one recombined; and a disk recombined with the simple
