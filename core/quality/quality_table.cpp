@@ -51,7 +51,9 @@ std::vector<Row> rows_for(const std::vector<QualityStats>& cols) {
         {"max dihedral angle", [](const QualityStats& s) { return fmt("%.2f", s.max_angle); }});
     rows.push_back({"average radius ratio",
                     [](const QualityStats& s) { return fmt("%.4f", s.avg_radius_ratio); }});
-  } else {
+  } else if (std::any_of(cols.begin(), cols.end(),
+                         [](const QualityStats& c) { return c.nb_elements > 0; })) {
+    // (A mesh of quadrangles only has no triangle rows: its quadrangle rows follow as extras.)
     if (any_inverted)
       rows.push_back({"inverted/flat", [](const QualityStats& s) { return count(s.nb_inverted); }});
     rows.push_back({"average quality", [](const QualityStats& s) { return fmt("%.4f", s.q_avg); }});
