@@ -18,7 +18,7 @@ namespace {
 
 // What counts as a rise of the star's minimum / sum of scaled Jacobians (not a bound on what
 // is kept: the extrema never fall).
-constexpr double kGain = 1e-9, kSumGain = 1e-6;
+constexpr double kGain = 1e-9, kSumGain = 1e-4;
 
 // The star of a vertex at some position: validity and the accept rule's extrema.
 struct StarMeasure {
@@ -119,9 +119,11 @@ class QuadSmoother {
     for (const double* g : {lap, cen})
       for (double f : {1.0, 0.5, 0.25})
         consider(x0[0] + f * (g[0] - x0[0]), x0[1] + f * (g[1] - x0[1]));
-    // Compass search from the best position on the star's minimum.
+    // Compass search from the best position on the star's minimum, where that is below
+    // compass_below.
     double h = 0.1 * shortest;
-    for (int halving = 0, steps = 0; halving <= o_.compass_halvings && steps < 64; ++steps) {
+    const int halvings = old.sj_min < o_.compass_below ? o_.compass_halvings : -1;
+    for (int halving = 0, steps = 0; halving <= halvings && steps < 64; ++steps) {
       bool moved = false;
       for (int d = 0; d < 8 && !moved; ++d) {
         const double a = d * M_PI / 4;

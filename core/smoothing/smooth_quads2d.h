@@ -2,9 +2,9 @@
 // quadrangles — classified inside a surface (vclass.dim 2), on no line (a written constrained
 // edge) and no kept line or point, with a closed star — is moved to the best of a few
 // positions: the Laplacian one (the mean of its edge neighbours), the mean of its elements'
-// centroids, each also a half and a quarter of the way, then a compass search from the best
-// (8 directions, from a tenth of its star's shortest edge, halved) that raises the star's minimum
-// scaled Jacobian (quad_scaled_jacobian.h).
+// centroids, each also a half and a quarter of the way, then, where its star's minimum scaled
+// Jacobian (quad_scaled_jacobian.h) is below compass_below, a compass search from the best (8
+// directions, from a tenth of its star's shortest edge, halved) that raises it.
 //
 // check: every quadrangle of the star strictly convex (exact orient2d on its 4 corner triangles,
 // quad_strictly_convex; one that was not convex before may stay so, its scaled Jacobian not
@@ -14,7 +14,7 @@
 // fall and the maximum angle does not rise (with guard_sum, nor does the sum of their scaled
 // Jacobians fall); over its triangles, the minimum and the sum of Q and the minimum angle do not
 // fall and the maximum angle does not rise; and the star's minimum scaled Jacobian rises (by
-// more than 1e-9), or their sum does (by more than 1e-6). The quadrangles' average scaled
+// more than 1e-9), or their sum does (by more than 1e-4). The quadrangles' average scaled
 // Jacobian must not end below the input's: a run that ends below it is made again with
 // guard_sum.
 // apply: the vertex's coordinates; connectivity never changes.
@@ -30,6 +30,7 @@ namespace cvtmesh {
 struct SmoothQuads2dOptions {
   int max_passes = 20;  // sweeps over the free vertices; stops earlier when none moves
   int compass_halvings = 6;
+  double compass_below = 0.9;  // the compass search runs where the star's minimum is below it
   // Also refuse a move that lowers the sum of its star's scaled Jacobians. Without it (the
   // default), a run whose average scaled Jacobian ends below the input's is made again with it.
   bool guard_sum = false;
