@@ -993,6 +993,7 @@ OptimizeResult optimize_2d_no_worse(TriMesh2& mesh, const OptimizeOptions& optio
                       "quadrangles only) kept unchanged, their nodes fixed");
   if (quads.nb_quads() == 0) return r;
   const auto t0 = std::chrono::steady_clock::now();
+  report_start(options, "quads");
   const QuadCheck qc_before = check_quads2d(mesh);
   const SmoothQuads2dStats qs = smooth_quads2d(mesh);
   const QuadCheck qc_after = check_quads2d(mesh);
