@@ -295,8 +295,15 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           throw InputError(what + ": node " + std::to_string(all_tags[i]) +
                            " has a NaN or infinite coordinate");
       if (order2 && mid_nodes.count(all_tags[i])) continue;
-      if (!index.add(all_tags[i], static_cast<int>(node_tags.size())))
+      if (!index.add(all_tags[i], static_cast<int>(node_tags.size()))) {
+        // The same node given again at the same place (a file that repeats its mesh: a view
+        // appended with it, read_msh_format.h) is the same node; elsewhere, ambiguous.
+        const int first = index.find(all_tags[i]);
+        if (std::equal(&all_xyz[3 * i], &all_xyz[3 * i] + 3,
+                       &xyz[3 * static_cast<std::size_t>(first)]))
+          continue;
         throw InputError(what + ": node tag " + std::to_string(all_tags[i]) + " is duplicated");
+      }
       node_tags.push_back(all_tags[i]);
       xyz.insert(xyz.end(), &all_xyz[3 * i], &all_xyz[3 * i] + 3);
       vclass.push_back({static_cast<std::int8_t>(dim), 0});

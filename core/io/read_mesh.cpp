@@ -230,6 +230,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   } remove_wrapper{wrapper_dir, wrapper};
   std::vector<int> views_before;
   gmsh::view::getTags(views_before);
+  std::string repeated_mesh_note;
   // The views the file brought ($NodeData, $ElementData): read into the mesh, then removed.
   auto new_views = [&] {
     std::vector<int> views, fresh;
@@ -255,14 +256,25 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     }
     // Gmsh keeps the first of two nodes or elements with one tag and only logs it: ambiguous
     // data, refused (the log holds messages only when our session started the logger).
+    // A file that repeats its mesh identically (a view appended with the mesh written again)
+    // is read once, with a note.
     gmsh::logger::get(log);
+    bool repeats_checked = false;
     for (std::size_t i = std::min(log_before.size(), log.size()); i < log.size(); ++i)
       for (const char* dup : {"Skipping duplicate node", "Skipping duplicate element"})
-        if (const auto at = log[i].find(dup); at != std::string::npos)
-          throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) + ")");
+        if (const auto at = log[i].find(dup); at != std::string::npos && !repeats_checked) {
+          if (!msh_repeats_identical_sections(path))
+            throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) +
+                             ")");
+          repeats_checked = true;
+          repeated_mesh_note = "'" + path +
+                               "' holds its mesh more than once, every copy the same (a view "
+                               "appended with the mesh): read once";
+        }
   });
   ElementOrigin origin = ElementOrigin::kModel;
   std::vector<std::string> read_notes;
+  if (!repeated_mesh_note.empty()) read_notes.push_back(repeated_mesh_note);
   std::vector<std::array<int, 3>> file_blocks;
   try {
     gmsh_checked("cannot mesh '" + path + "'", [&] {
