@@ -1067,6 +1067,14 @@ OptimizeResult optimize_volumes_apart(MeshData& data, const OptimizeOptions& opt
   r.converged = true;
   r.kept_input = true;
   const TetMesh input = data.tet;
+  // Coincident nodes of two volumes (the lips of a crack made by Gmsh's Crack plugin, parts in
+  // contact) stay where they are: the volumes' meshes keep matching there.
+  const StructuralDefects defects = find_structural_defects(data.tet, options.coincident_tolerance);
+  for (const auto& pair : defects.coincident_vertices)
+    for (int v : pair) {
+      VertexClass& c = data.tet.vclass[v];
+      if (c.entity >= 0) c = VertexClass{0, -1 - (4 * c.entity + c.dim)};  // pin_vertices.h
+    }
   for (int tag : tags) {
     const RegionSubmesh x = extract_regions(data.tet, {tag});
     MeshData sub;
@@ -1103,6 +1111,7 @@ OptimizeResult optimize_volumes_apart(MeshData& data, const OptimizeOptions& opt
     for (const std::string& n : v.notes)
       r.notes.push_back("volume " + std::to_string(tag) + ": " + n);
   }
+  unpin_vertices(data.tet);
   drop_removed_vertices(data.tet, input);
   r.after = quality_stats(data.tet, r.method);
   return r;

@@ -548,5 +548,36 @@ TEST(RobustInputs, MeshRepeatedIdenticallyBeforeAViewIsReadOnce) {
   }
 }
 
+// A crack made by Gmsh's Crack plugin: two volumes whose interface is split on the crack, its
+// nodes duplicated there. Each volume is optimized apart and the crack's lips keep matching: every
+// pair of coincident nodes of the input is still a pair at the same place.
+TEST(RobustInputs, CrackLipsKeepMatchingWhenEachVolumeIsOptimizedApart) {
+  MeshData d = read_mesh(
+      write_geo("crack", std::string(kBox) +
+                             "Box(2) = {0,0,-1,1,1,1};\nRectangle(100) = {0.25,0.25,0,0.5,0.5};\n"
+                             "BooleanFragments{ Volume{1,2}; Surface{100}; Delete; }{}\n"
+                             "s() = Surface In BoundingBox{0.2,0.2,-0.01,0.8,0.8,0.01};\n"
+                             "Physical Surface(1) = {s()};\nMesh.MeshSizeMax = 0.2;\nMesh 3;\n"
+                             "Plugin(Crack).Dimension = 2;\nPlugin(Crack).PhysicalGroup = 1;\n"
+                             "Plugin(Crack).Run;\n"));
+  const StructuralDefects before = find_structural_defects(d.tet);
+  ASSERT_FALSE(before.coincident_vertices.empty());
+  const TetMesh input = d.tet;
+  const OptimizeResult r = optimize(d, quick());
+  EXPECT_TRUE(has_note(r, "each volume optimized apart"));
+  EXPECT_FALSE(r.kept_input);
+  expect_valid_and_no_worse(d, r);
+  EXPECT_FALSE(volumes_defective_only_together(d.tet).empty());
+  // The lips: each input pair of coincident nodes has both nodes, unmoved, in the output.
+  std::map<std::array<double, 3>, int> at;
+  for (int v = 0; v < d.tet.nb_vertices(); ++v)
+    ++at[{d.tet.point(v)[0], d.tet.point(v)[1], d.tet.point(v)[2]}];
+  for (const auto& [a, b] : before.coincident_vertices) {
+    const double* p = input.point(a);
+    EXPECT_EQ((at[{p[0], p[1], p[2]}]), 2) << "node " << a;
+    (void)b;
+  }
+}
+
 }  // namespace
 }  // namespace cvtmesh
