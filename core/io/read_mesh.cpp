@@ -317,12 +317,39 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
                              "tetrahedra: cvtmesh does not mesh the volumes of a partitioned " +
                              "surface mesh; save it unpartitioned (without -part), or mesh the " +
                              "volumes first (gmsh -3 -part N)");
-          const std::vector<int> volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
-          for (int v : volumes) file_blocks.push_back({3, v, 4});
-          std::sort(file_blocks.begin(), file_blocks.end());
-          read_notes.push_back(
-              "'" + path + "' holds surfaces and no tetrahedra: " + std::to_string(volumes.size()) +
-              " volume(s) inside them meshed by Gmsh, the surface mesh kept");
+          // Surfaces Gmsh cannot mesh the inside of (they bound no volume: overlapping or
+          // crossing sheets, quadrangles) are read as they are, a surface mesh in space
+          // (gmsh_surface_mesh3.h), from the file opened again.
+          std::vector<int> volumes;
+          std::string refused;
+          try {
+            volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
+          } catch (const InputError& e) {
+            refused = e.what();
+          } catch (...) {
+            // Gmsh's own failure: its last logged error says what.
+            std::string last;
+            try {
+              gmsh::logger::getLastError(last);
+            } catch (...) {
+            }
+            refused = last.empty() ? std::string("Gmsh failed") : last;
+          }
+          if (refused.empty()) {
+            for (int v : volumes) file_blocks.push_back({3, v, 4});
+            std::sort(file_blocks.begin(), file_blocks.end());
+            read_notes.push_back("'" + path + "' holds surfaces and no tetrahedra: " +
+                                 std::to_string(volumes.size()) +
+                                 " volume(s) inside them meshed by Gmsh, the surface mesh kept");
+          } else {
+            std::string name;
+            gmsh::model::getCurrent(name);
+            gmsh::model::remove();
+            gmsh::model::add(name);
+            gmsh::merge(path);
+            read_notes.push_back("'" + path + "': the volumes inside its surfaces cannot be " +
+                                 "meshed (" + refused + "): read as a surface mesh");
+          }
         }
         // A .msh saved with physical groups may lack the boundary elements of other surfaces.
         int want = options.dim;
