@@ -140,6 +140,7 @@ SurfaceMeshStats optimize_surface_mesh(TetMesh& m, const BoundaryModel& model,
     st.nb_moves += cvt.nb_moved + maxmin.nb_moved;
     st.nb_flips += flips.nb_flipped;
     const Score s = score(m);
+    if (o.progress) o.progress(round, s.q_min, s.q_avg);
     if (s.no_worse_than(input_score) && s > best_score) {
       best_score = s;
       best = m;

@@ -11,6 +11,7 @@
 // With fix_vertices nothing moves: only flips of exactly coplanar edges (the surface unchanged).
 #pragma once
 #include <array>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct SurfaceMeshOptions {
   double worst_fraction = 0.05;  // (c): the vertices of this fraction of the worst triangles
   // Edges never flipped (smaller id first, sorted): the file's line elements.
   std::vector<std::array<int, 2>> kept_edges;
+  // Called after each round with the round and the mesh's Q_min and average Q.
+  std::function<void(int round, double q_min, double q_avg)> progress;
 };
 
 struct SurfaceMeshStats {

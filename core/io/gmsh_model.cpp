@@ -463,7 +463,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       if (surface3)
         m.model.read_notes.push_back(
             what + " holds triangles on surfaces in space that bound no volume: read as a " +
-            "surface mesh, optimized on its surfaces");
+            "surface mesh in space");
       else
         keep_loose_triangles(m);
       // Tets in the other vertex order are turned positive (check_mesh then says whether they

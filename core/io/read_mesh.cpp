@@ -23,6 +23,7 @@
 #include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_mesh_volumes.h"
+#include "core/io/gmsh_surface_mesh3.h"
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_partition_map.h"
@@ -354,7 +355,10 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
         // A .msh saved with physical groups may lack the boundary elements of other surfaces.
         int want = options.dim;
         if (want < 0) want = has_elements(3) ? 3 : 2;
-        add_missing_facets(want);
+        // Not for a surface mesh in space: its open borders need no line elements (the file's
+        // are kept as they are; a compound curve of t12 would get one line more).
+        if (!(options.dim < 0 && want == 2 && gmsh_surface_mesh_in_space()))
+          add_missing_facets(want);
       }
     });
     data = mesh_from_gmsh(options.dim, "'" + path + "'");

@@ -44,6 +44,15 @@ void optimize_surface3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryMo
   so.fix_vertices = o.fix_boundary;
   so.hausdorff = operators;
   so.kept_edges = line_edges(mesh);
+  if (o.progress)
+    so.progress = [&o](int round, double q_min, double q_avg) {
+      OptimizeProgress p;
+      p.phase = "bnd-cvt";
+      p.iteration = round;
+      p.q_min = q_min;
+      p.q_avg = q_avg;
+      o.progress(p);
+    };
   const SurfaceMeshStats st = optimize_surface_mesh(mesh, model, so);
   r.iterations = st.rounds;
   r.converged = st.converged;

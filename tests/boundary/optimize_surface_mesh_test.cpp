@@ -19,6 +19,7 @@
 #include "core/mesh/check_surface_mesh.h"
 #include "core/pipeline/optimize.h"
 #include "core/quality/quality.h"
+#include "core/quality/quality_stats.h"
 #include "core/quality/worse_than.h"
 #include "tests/io/gmsh_dump.h"
 #include "tests/support/test_meshes.h"
@@ -199,6 +200,43 @@ TEST(SurfaceMesh3, PlateOutsideZConstIsReadAndStaysInItsPlane) {
   EXPECT_TRUE(worse_than(r.after, r.before).empty());
   for (int v = 0; v < d.tet.nb_vertices(); ++v) EXPECT_NEAR(d.tet.point(v)[0], 0, 1e-12);
   EXPECT_TRUE(check_mesh(d.tet).ok);
+}
+
+// Gmsh's demos/boolean/surface_filling.geo: four fillings of one curve loop, crossing one another.
+// Every edge is on an even number of triangles, so the file looks like a closed shell, but Gmsh
+// cannot mesh a volume inside ("overlapping facets"): read as a surface mesh, optimized through
+// the CLI, the output accepted by `check`.
+TEST(SurfaceMesh3, FillingsOfOneLoopThatBoundNoVolumeGoThroughTheCli) {
+  const std::string dir = testing::temp_dir();
+  const std::string msh =
+      mesh_geo(dir,
+               "SetFactory(\"OpenCASCADE\");\nMesh.MeshSizeMin = 0.04;\nMesh.MeshSizeMax = 0.04;\n"
+               "Point(1) = {-0.8, 0.1, -0.2, 1.0};\nPoint(2) = {-0.5, 0.1, -0.2, 1.0};\n"
+               "Point(3) = {-0.6, 0, -0.1, 1.0};\nPoint(4) = {-0.7, -0, -0.1, 1.0};\n"
+               "Point(5) = {-0.7, 0.2, -0.2, 1.0};\nPoint(6) = {-0.6, 0.1, -0.1, 1.0};\n"
+               "Spline(1) = {1, 5, 2};\nSpline(2) = {2, 6, 3};\nSpline(3) = {3, 4, 1};\n"
+               "Curve Loop(1) = {1, 2, 3};\nSurface(1) = {1};\nBSpline Surface(2) = {1};\n"
+               "BSpline Surface(3) = {1};\nPoint(7) = {-0.7, 0.1, -0.2, 1.0};\n"
+               "Point(8) = {-0.67, 0.1, -0.2, 1.0};\nSurface(4) = {1} Using Point {7,8};\n",
+               "filling");
+  const MeshData d = read_mesh(msh);
+  ASSERT_EQ(d.dim, 3);
+  ASSERT_TRUE(is_surface_mesh(d.tet));
+  bool noted = false;
+  for (const auto& n : d.model().read_notes)
+    noted |= n.find("cannot be meshed") != std::string::npos;
+  EXPECT_TRUE(noted);
+  const std::string out = dir + "/filling_opt.msh";
+  std::string log;
+  ASSERT_EQ(run(testing::cli_path() + " optimize " + msh + " -o " + out, &log), 0) << log;
+  EXPECT_NE(log.find("minimum angle"), std::string::npos) << log;
+  EXPECT_EQ(run(testing::cli_path() + " check " + out, &log), 0) << log;
+  EXPECT_NE(log.find("surface mesh in space"), std::string::npos) << log;
+  const MeshData o = read_mesh(out);
+  ASSERT_TRUE(is_surface_mesh(o.tet));
+  EXPECT_EQ(o.tet.nb_tris(), d.tet.nb_tris());
+  EXPECT_GE(min_quality(o.tet, Measure::kMinAngle), min_quality(d.tet, Measure::kMinAngle));
+  EXPECT_GE(min_quality(o.tet, Measure::kQ), min_quality(d.tet, Measure::kQ));
 }
 
 // Two triangles of a long thin rhombus split along its long diagonal.
