@@ -11,6 +11,7 @@
 #include "core/geometry/tet_geometry.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/face_key.h"
+#include "core/quality/quality.h"
 
 namespace cvtmesh {
 namespace {
@@ -87,6 +88,16 @@ SurfaceFlipStats flip_surface_edges(TetMesh& m, const BoundaryModel& model,
       const double before = std::min(min_angle(pa, pb, pc), min_angle(pa, pb, pd));
       const double after = std::min(min_angle(pa, pc, pd), min_angle(pb, pd, pc));
       if (!(after > before + o.min_gain)) continue;
+      auto max_angle = [](const double* x, const double* y, const double* z) {
+        return tri_quality(x, y, z, 3, Measure::kMaxAngle);
+      };
+      auto q = [](const double* x, const double* y, const double* z) {
+        return tri_quality(x, y, z, 3, Measure::kQ);
+      };
+      const double max_before = std::max(max_angle(pa, pb, pc), max_angle(pa, pb, pd));
+      const double max_after = std::max(max_angle(pa, pc, pd), max_angle(pb, pd, pc));
+      if (max_after > std::max(max_before, o.max_angle_ceiling)) continue;
+      if (std::min(q(pa, pc, pd), q(pb, pd, pc)) < std::min(q(pa, pb, pc), q(pa, pb, pd))) continue;
       ++st.nb_tried;
       // The pair's normal, oriented as f1 (f2's reversed if it runs a -> b as f1 does).
       Vec3 n1 = cross(sub(m.point(t1[1]), m.point(t1[0])), sub(m.point(t1[2]), m.point(t1[0])));

@@ -10,7 +10,8 @@
 //    (surface_folds.h), when a new triangle leaves the Hausdorff tolerance (not checked for
 //    coplanar_only: the surface is unchanged);
 //  - kept only if the smaller minimum angle of the two triangles rises by more than min_gain
-//    degrees (the Delaunay criterion where the pair is flat).
+//    degrees (the Delaunay criterion where the pair is flat), their larger maximum angle does not
+//    rise above max(its old value, max_angle_ceiling) and their smaller Q does not fall.
 // Vertices never move; the new triangles keep the surface tags and element tags of the old ones
 // and their turning sense.
 #pragma once
@@ -24,9 +25,10 @@
 namespace cvtmesh {
 
 struct SurfaceFlipOptions {
-  double flat_angle = 10;      // degrees between the two triangles' normals, at most
-  bool coplanar_only = false;  // flip only where a, b, c, d are exactly coplanar
-  double min_gain = 1e-6;      // degrees
+  double flat_angle = 10;          // degrees between the two triangles' normals, at most
+  bool coplanar_only = false;      // flip only where a, b, c, d are exactly coplanar
+  double min_gain = 1e-6;          // degrees
+  double max_angle_ceiling = 180;  // degrees
   int passes = 10;
   double hausdorff = std::numeric_limits<double>::infinity();  // absolute
   // Edges never flipped (smaller id first, sorted), e.g. the line elements of the file.

@@ -95,6 +95,11 @@ SurfaceMeshStats optimize_surface_mesh(TetMesh& m, const BoundaryModel& model,
   fo.coplanar_only = o.fix_vertices;
   fo.hausdorff = o.hausdorff;
   fo.kept_edges = o.kept_edges;
+  const Score input_score = score(m);
+  // The floors of the moves and the ceiling of the moves and flips, from the input's extremes:
+  // no move or flip takes a fan below the input's minimum angle or Q_min, nor above its maximum
+  // angle (each round is then not worse than the input on those rows).
+  fo.max_angle_ceiling = std::min(fo.max_angle_ceiling, input_score.max_angle);
   if (o.fix_vertices) {
     st.nb_flips = flip_surface_edges(m, model, fo).nb_flipped;
     st.rounds = 1;
@@ -122,14 +127,19 @@ SurfaceMeshStats optimize_surface_mesh(TetMesh& m, const BoundaryModel& model,
       if (count[v]) sizes[v] /= count[v];
   }
   TetMesh best = m;
-  const Score input_score = score(m);
   Score best_score = input_score;
+  // The last round that gained a visible amount (0.01 degree, 1e-4 of Q_min or average Q).
+  Score gain_score = input_score;
+  int gain_round = 0;
   for (int round = 1; round <= o.rounds; ++round) {
     st.rounds = round;
     SurfaceMoveOptions mo;
     mo.relaxation = o.relaxation;
     mo.hausdorff = o.hausdorff;
     mo.sizes = &sizes;
+    mo.q_floor = std::max(mo.q_floor, input_score.q_min);
+    mo.angle_floor = std::max(mo.angle_floor, input_score.min_angle);
+    mo.angle_ceiling = std::min(mo.angle_ceiling, input_score.max_angle);
     BoundaryFans fans = boundary_fans(m);
     const SurfaceMoveStats cvt = smooth_surface_vertices(m, model, fans, all, mo);
     const SurfaceFlipStats flips = flip_surface_edges(m, model, fo);
@@ -145,11 +155,17 @@ SurfaceMeshStats optimize_surface_mesh(TetMesh& m, const BoundaryModel& model,
       best_score = s;
       best = m;
       st.best_round = round;
+      if (best_score.min_angle > gain_score.min_angle + 0.01 ||
+          best_score.q_min > gain_score.q_min + 1e-4 ||
+          best_score.q_avg > gain_score.q_avg + 1e-4) {
+        gain_score = best_score;
+        gain_round = round;
+      }
     }
     // Converged: the vertices stopped and no edge flips, or no round better than the best for
     // `patience` rounds.
     if ((std::max(cvt.max_step, maxmin.max_step) <= step_tolerance && flips.nb_flipped == 0) ||
-        round - st.best_round >= o.patience) {
+        round - gain_round >= o.patience) {
       st.converged = true;
       break;
     }

@@ -5,7 +5,8 @@
 //  (b) Delaunay edge flips between nearly coplanar triangles of one surface (flip_surface_edges),
 //  (c) max-min angle moves of the vertices of the worst triangles (kMaxMin),
 // until no vertex moves by more than `tolerance` of the mean edge length and no edge flips, or
-// `patience` rounds in a row bring nothing better than the best so far. The
+// `patience` rounds in a row gain less than 0.01 degree of minimum angle and 1e-4 of Q_min and of
+// average Q over the best so far. The
 // round with the best triangles (highest minimum angle, then Q_min, then average Q) among those
 // not worse than the input on any of them nor on the maximum angle is kept (else the input).
 // With fix_vertices nothing moves: only flips of exactly coplanar edges (the surface unchanged).

@@ -443,7 +443,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       record_cell_parts(cell_tags, cell_parts, info.partitioning);
     }
     bool kept_cells = false;
-    for (const auto& b : info.extra) kept_cells |= b.dim == dim;
+    for (const auto& b : info.extra) kept_cells |= b.dim == dim || (surface3 && b.dim == 2);
     if (cells.empty() && !kept_cells && !(surface3 && !facets.empty()))
       throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") +
                        " (empty mesh)");

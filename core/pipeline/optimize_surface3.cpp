@@ -40,7 +40,7 @@ void optimize_surface3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryMo
   r.tri_q_min_before = worst_triangle_q(mesh);
   const TetMesh input = mesh;
   SurfaceMeshOptions so;
-  if (o.max_iterations > 0) so.rounds = std::min(o.max_iterations, so.rounds);
+  if (o.max_iterations > 0) so.rounds = o.max_iterations;  // resolve(): 100 by default
   so.fix_vertices = o.fix_boundary;
   so.hausdorff = operators;
   so.kept_edges = line_edges(mesh);
