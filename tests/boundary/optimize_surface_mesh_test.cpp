@@ -239,6 +239,40 @@ TEST(SurfaceMesh3, FillingsOfOneLoopThatBoundNoVolumeGoThroughTheCli) {
   EXPECT_GE(min_quality(o.tet, Measure::kQ), min_quality(d.tet, Measure::kQ));
 }
 
+// A sphere octant with a recombined (quadrangle) plane beside it: the quadrangles are kept as they
+// are, their nodes do not move, the triangles are optimized.
+TEST(SurfaceMesh3, QuadranglesBesideTheTrianglesArePinned) {
+  const std::string dir = testing::temp_dir();
+  const std::string msh =
+      mesh_geo(dir,
+               std::string(kOctant) +
+                   "Point(5) = {2, 0, 0, 0.1};\nPoint(6) = {2, 1, 0, 0.1};\nLine(4) = {2, 5};\n"
+                   "Line(5) = {5, 6};\nLine(6) = {6, 3};\nCurve Loop(2) = {4, 5, 6, -1};\n"
+                   "Plane Surface(2) = {2};\nRecombine Surface{2};\nPhysical Surface(\"plate\", "
+                   "10) = {2};\n",
+               "mixed");
+  MeshData d = read_mesh(msh);
+  ASSERT_TRUE(is_surface_mesh(d.tet));
+  std::set<int> quad_nodes;
+  long nb_quads = 0;
+  for (const ElementBlock& b : d.tet.model.extra)
+    if (b.gmsh_type == 3) {
+      quad_nodes.insert(b.nodes.begin(), b.nodes.end());
+      nb_quads += static_cast<long>(b.tags.size());
+    }
+  ASSERT_GT(nb_quads, 0);
+  const TetMesh input = d.tet;
+  const OptimizeResult r = optimize(d, OptimizeOptions{});
+  EXPECT_TRUE(worse_than(r.after, r.before).empty());
+  for (int v : quad_nodes)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(d.tet.point(v)[k], input.point(v)[k]) << v;
+  long after = 0;
+  for (const ElementBlock& b : d.tet.model.extra)
+    if (b.gmsh_type == 3) after += static_cast<long>(b.tags.size());
+  EXPECT_EQ(after, nb_quads);
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+}
+
 // Two triangles of a long thin rhombus split along its long diagonal.
 TetMesh rhombus(int surface2) {
   TetMesh m;
