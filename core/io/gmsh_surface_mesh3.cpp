@@ -4,9 +4,13 @@
 
 #include <cstddef>
 #include <unordered_map>
+#include <string>
 #include <vector>
 
 #include "core/geometry/z_range.h"
+#include "core/util/error.h"
+#include "core/io/gmsh_model.h"
+#include "core/io/gmsh_session.h"
 
 namespace cvtmesh {
 
@@ -49,6 +53,39 @@ bool gmsh_surface_mesh_in_space() {
     }
   }
   return any && !z_range(corners).planar;
+}
+
+MeshData surface_mesh_in_space(const SurfaceMesh& surface, const std::string& name,
+                               const std::string& what) {
+  if (surface.tris.empty()) throw InputError(what + " contains no triangles");
+  GmshSession session;
+  std::string previous;
+  gmsh::model::getCurrent(previous);
+  MeshData data;
+  auto restore = [&] {
+    gmsh::model::remove();
+    if (!previous.empty() && !session.owns()) gmsh::model::setCurrent(previous);
+  };
+  try {
+    gmsh_checked("cannot read the surface of " + what, [&] {
+      gmsh::model::add(name);
+      gmsh::model::addDiscreteEntity(2, 1);
+      const std::size_t nv = surface.xyz.size() / 3, nf = surface.tris.size() / 3;
+      std::vector<std::size_t> node_tags(nv), elem_tags(nf), conn(surface.tris.size());
+      for (std::size_t i = 0; i < nv; ++i) node_tags[i] = i + 1;
+      for (std::size_t f = 0; f < nf; ++f) elem_tags[f] = f + 1;
+      for (std::size_t i = 0; i < conn.size(); ++i)
+        conn[i] = static_cast<std::size_t>(surface.tris[i]) + 1;
+      gmsh::model::mesh::addNodes(2, 1, node_tags, surface.xyz);
+      gmsh::model::mesh::addElementsByType(1, 2, elem_tags, conn);
+    });
+    data = mesh_from_gmsh(-1, what);
+  } catch (...) {
+    restore();
+    throw;
+  }
+  restore();
+  return data;
 }
 
 }  // namespace cvtmesh

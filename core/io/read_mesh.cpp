@@ -130,7 +130,15 @@ const char* write_only_format(const std::string& ext) {
 // A surface file: tetrahedralized by Gmsh (3D), or a planar triangle mesh read as 2D (--dim 2).
 MeshData read_surface_file(const std::string& path, const ReadOptions& options) {
   const std::string what = "'" + path + "'";
-  if (options.dim != 2) return tetrahedralize_surface(read_surface(path, true), what, options);
+  if (options.dim != 2) {
+    // A closed surface: the volume inside it meshed. An open one not in a plane z = const: a
+    // surface mesh in space (gmsh_surface_mesh3.h). An open plane one stays refused (--dim 2
+    // reads it as 2D).
+    SurfaceMesh s = read_surface(path, false);
+    if (surface_closes_up(s)) return tetrahedralize_surface(s, what, options);
+    if (z_range(s.xyz).planar) read_surface(path, true);  // throws "not closed"
+    return surface_mesh_in_space(s, std::filesystem::path(path).stem().string(), what);
+  }
   const SurfaceMesh s = read_surface(path, false);
   MeshData d;
   d.dim = 2;

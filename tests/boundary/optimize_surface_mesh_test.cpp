@@ -273,6 +273,27 @@ TEST(SurfaceMesh3, QuadranglesBesideTheTrianglesArePinned) {
   EXPECT_TRUE(check_mesh(d.tet).ok);
 }
 
+// An open surface in an .stl (the octant exported by Gmsh): a surface mesh in space, optimized and
+// written back as an .stl that reads again as the same surface mesh.
+TEST(SurfaceMesh3, OpenStlInSpaceIsOptimizedAndWrittenBack) {
+  const std::string dir = testing::temp_dir();
+  const std::string geo = dir + "/octant.geo", stl = dir + "/octant.stl";
+  std::ofstream(geo) << kOctant;
+  std::string log;
+  ASSERT_EQ(run("gmsh -v 0 -2 " + geo + " -o " + stl, &log), 0) << log;
+  MeshData d = read_mesh(stl);
+  ASSERT_EQ(d.dim, 3);
+  ASSERT_TRUE(is_surface_mesh(d.tet));
+  const OptimizeResult r = optimize(d, OptimizeOptions{});
+  EXPECT_TRUE(worse_than(r.after, r.before).empty());
+  const std::string out = dir + "/octant_opt.stl";
+  write_mesh(d, out);
+  const MeshData back = read_mesh(out);
+  ASSERT_TRUE(is_surface_mesh(back.tet));
+  EXPECT_EQ(back.tet.nb_tris(), d.tet.nb_tris());
+  EXPECT_EQ(run(testing::cli_path() + " check " + out, &log), 0) << log;
+}
+
 // Two triangles of a long thin rhombus split along its long diagonal.
 TetMesh rhombus(int surface2) {
   TetMesh m;
