@@ -41,7 +41,10 @@ void optimize_surface3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryMo
   const TetMesh input = mesh;
   SurfaceMeshOptions so;
   if (o.max_iterations > 0) so.rounds = o.max_iterations;  // resolve(): 100 by default
-  so.fix_vertices = o.fix_boundary;
+  // As for a tet mesh, only the default method moves the boundary (here every vertex); the
+  // paper's methods and --fix-boundary keep it: flips of coplanar edges only.
+  const bool fixed = o.fix_boundary || o.method != "cvdt+swap+smooth";
+  so.fix_vertices = fixed;
   so.hausdorff = operators;
   so.kept_edges = line_edges(mesh);
   if (o.progress)
@@ -56,7 +59,7 @@ void optimize_surface3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryMo
   const SurfaceMeshStats st = optimize_surface_mesh(mesh, model, so);
   r.iterations = st.rounds;
   r.converged = st.converged;
-  r.boundary_free = !o.fix_boundary;
+  r.boundary_free = !fixed;
   r.boundary_geometry = model.geometry ? model.geometry->kind() : "discrete";
   r.nb_surface_vertices = model.nb_surface_vertices;
   r.nb_curve_vertices = model.nb_curve_vertices;
@@ -93,13 +96,17 @@ void optimize_surface3(TetMesh& mesh, const OptimizeOptions& o, const BoundaryMo
       moved += mesh.xyz[3 * v] != input.xyz[3 * v] || mesh.xyz[3 * v + 1] != input.xyz[3 * v + 1] ||
                mesh.xyz[3 * v + 2] != input.xyz[3 * v + 2];
     r.nb_boundary_moved = static_cast<int>(moved);
-    r.notes.push_back("a surface mesh in space (no tetrahedra): its triangles optimized on their " +
-                      std::string(r.boundary_geometry) + " surfaces (" +
-                      (o.fix_boundary ? "vertices fixed, only flips of coplanar edges"
-                                      : "constrained CVT, edge flips, max-min smoothing") +
-                      "; " + std::to_string(st.nb_flips) + " flips, round " +
-                      std::to_string(st.best_round) + " of " + std::to_string(st.rounds) +
-                      " kept)");
+    r.notes.push_back(
+        "a surface mesh in space (no tetrahedra): its triangles optimized on their " +
+        std::string(r.boundary_geometry) + " surfaces (" +
+        (fixed ? "vertices fixed" +
+                     (o.fix_boundary
+                          ? std::string()
+                          : " by the method '" + o.method + "' (only the default moves them)") +
+                     ", only flips of coplanar edges"
+               : "constrained CVT, edge flips, max-min smoothing") +
+        "; " + std::to_string(st.nb_flips) + " flips, round " + std::to_string(st.best_round) +
+        " of " + std::to_string(st.rounds) + " kept)");
   }
   r.tri_q_min_after = worst_triangle_q(mesh);
   r.after = quality_stats(mesh, r.method);

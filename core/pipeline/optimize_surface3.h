@@ -2,7 +2,8 @@
 // core/mesh/check_surface_mesh.h): the triangles optimized on the reference geometry
 // (core/boundary/optimize_surface_mesh.h), the file's lines kept as edges, and the result checked
 // (valid, no new fold, within the Hausdorff bound) and never worse than the input on Q_min, the
-// minimum and the maximum angle (the input is kept otherwise, with a note).
+// minimum and the maximum angle (the input is kept otherwise, with a note). Only the default
+// method (cvdt+swap+smooth) without fix_boundary moves vertices; the others flip coplanar edges.
 #pragma once
 #include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
