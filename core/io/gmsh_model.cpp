@@ -16,6 +16,7 @@
 #include "core/io/gmsh_model_elements.h"
 #include "core/io/gmsh_partition_map.h"
 #include "core/io/gmsh_repartition.h"
+#include "core/io/gmsh_surface_mesh3.h"
 #include "core/io/gmsh_session.h"
 #include "core/mesh/reorient_tets.h"
 #include "core/io/place_mid_edge_nodes.h"
@@ -199,13 +200,17 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       if (!types.empty()) max_dim = std::max(max_dim, d);
     }
     if (max_dim < 0) throw InputError(what + " has no mesh elements (empty mesh)");
-    if (dim < 0) dim = max_dim;
+    // Triangles on surfaces in space that bound no volume: a surface mesh in 3D, a TetMesh
+    // without tets (gmsh_surface_mesh3.h).
+    const bool surface3 = dim < 0 && max_dim == 2 && gmsh_surface_mesh_in_space();
+    if (dim < 0) dim = surface3 ? 3 : max_dim;
     if (dim != 2 && dim != 3)
       throw InputError(what +
                        ": only 2D triangle and 3D tetrahedral meshes are supported (highest "
                        "element dimension is " +
                        std::to_string(max_dim) + ")");
-    if (max_dim < dim) throw InputError(what + " has no " + std::to_string(dim) + "D elements");
+    if (max_dim < dim && !surface3)
+      throw InputError(what + " has no " + std::to_string(dim) + "D elements");
     out.dim = dim;
 
     for (const auto& [d, t] : ents) {
@@ -445,8 +450,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       record_cell_parts(cell_tags, cell_parts, info.partitioning);
     }
     bool kept_cells = false;
-    for (const auto& b : info.extra) kept_cells |= b.dim == dim;
-    if (cells.empty() && !kept_cells)
+    for (const auto& b : info.extra) kept_cells |= b.dim == dim || (surface3 && b.dim == 2);
+    if (cells.empty() && !kept_cells && !(surface3 && !facets.empty()))
       throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") +
                        " (empty mesh)");
 
@@ -462,7 +467,12 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       m.tri_surface = std::move(facet_entity);
       m.tri_tags = std::move(facet_tags);
       m.model = std::move(info);
-      keep_loose_triangles(m);
+      if (surface3)
+        m.model.read_notes.push_back(
+            what + " holds triangles on surfaces in space that bound no volume: read as a " +
+            "surface mesh in space");
+      else
+        keep_loose_triangles(m);
       // Tets in the other vertex order are turned positive (check_mesh then says whether they
       // form a mesh: a tangled one overlaps); flat ones are refused.
       const Reoriented ro = reorient_tets(m);

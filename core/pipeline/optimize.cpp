@@ -29,6 +29,8 @@
 #include "core/pipeline/methods3.h"
 #include "core/pipeline/option_schema.h"
 #include "core/pipeline/optimize2d.h"
+#include "core/pipeline/optimize_surface3.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/pipeline/repair_slivers.h"
 #include "core/pipeline/restore_worse_regions.h"
 #include "core/swap/swap_slivers.h"
@@ -1282,6 +1284,18 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
                       " elements other than tets and their boundary triangles (surfaces bounding "
                       "no volume, quadrangles, prisms, pyramids, hexahedra) kept unchanged, "
                       "their vertices fixed");
+  if (is_surface_mesh(data.tet)) {
+    // A surface mesh in space: its triangles optimized on their surfaces (optimize_surface3.h),
+    // the vertices of kept elements (quadrangles) and periodic nodes fixed.
+    TetMesh& mesh = data.tet;
+    pin_vertices(mesh);
+    const BoundaryModel b = boundary_model(mesh, o);
+    optimize_surface3(mesh, o, b, hausdorff_tolerance(o, b, kOperatorShare),
+                      hausdorff_tolerance(o, b), r);
+    unpin_vertices(mesh);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  }
   if (data.tet.nb_tets() == 0) {
     r.notes.push_back("no tetrahedra: nothing to optimize, the mesh is written unchanged");
     r.kept_input = true;
