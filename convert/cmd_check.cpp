@@ -6,7 +6,9 @@
 #include "core/io/place_mid_edge_nodes.h"
 #include "core/mesh/check_mesh.h"
 #include "core/mesh/check_quads2d.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/pipeline/find_structural_defects.h"
+#include "core/pipeline/volumes_apart.h"
 
 namespace cvtmesh::cli {
 
@@ -33,11 +35,52 @@ void register_check(CLI::App& app) {
          const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
          // Structure: a self-intersecting boundary is invalid; coincident
          // nodes (parts in contact) are reported as a warning.
-         if (d.dim == 3) {
-           const StructuralDefects s = find_structural_defects(d.tet);
+         // A surface mesh in space: its surfaces may cross one another (CAD faces that bound no
+         // volume), a warning; a surface crossing itself or folded onto itself is invalid.
+         const bool surface = d.dim == 3 && is_surface_mesh(d.tet);
+         if (surface) {
+           StructuralDefects s = find_structural_defects(d.tet);
+           StructuralDefects across;
+           auto& pairs = s.intersecting_tris;
+           for (auto it = pairs.begin(); it != pairs.end();)
+             if (d.tet.tri_surface[(*it)[0]] != d.tet.tri_surface[(*it)[1]]) {
+               across.intersecting_tris.push_back(*it);
+               it = pairs.erase(it);
+             } else {
+               ++it;
+             }
+           for (const auto& line : across.describe(d.tet))
+             info() << in->path << ": warning: " << line << " (different surfaces)\n";
            const auto lines = s.describe(d.tet);
            for (std::size_t i = 0; i < lines.size(); ++i) {
-             const bool intersect = i == 0 && !s.intersecting_tris.empty();
+             if (i == 0 && !s.intersecting_tris.empty()) {
+               r.ok = false;
+               r.problems.push_back(lines[i]);
+             } else {
+               info() << in->path << ": warning: " << lines[i] << "\n";
+             }
+           }
+           const auto folds = folded_triangle_pairs(d.tet);
+           if (!folds.empty()) {
+             r.ok = false;
+             const auto& f = folds.front();
+             r.problems.push_back(std::to_string(folds.size()) +
+                                  " pairs of neighbouring triangles of one surface are folded onto "
+                                  "each other (first: triangles " +
+                                  std::to_string(f[0]) + " and " + std::to_string(f[1]) +
+                                  " of surface " + std::to_string(d.tet.tri_surface[f[0]]) + ")");
+           }
+         } else if (d.dim == 3) {
+           const StructuralDefects s = find_structural_defects(d.tet);
+           const auto lines = s.describe(d.tet);
+           // Volumes that overlap or touch without a common mesh (an assembly meshed part by
+           // part), each valid alone: a warning (optimize runs on each volume apart).
+           const bool apart = !s.empty() && !volumes_defective_only_together(d.tet).empty();
+           if (apart)
+             info() << in->path << ": warning: the volumes overlap or touch without sharing "
+                    << "their mesh (each volume alone is valid):\n";
+           for (std::size_t i = 0; i < lines.size(); ++i) {
+             const bool intersect = i == 0 && !s.intersecting_tris.empty() && !apart;
              if (intersect) {
                r.ok = false;
                r.problems.push_back(lines[i]);
@@ -76,8 +119,11 @@ void register_check(CLI::App& app) {
            r.ok &= p.nb_invalid == 0;
          }
          if (r.ok) {
-           std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "") << n
-                     << (d.dim == 3 ? " tetrahedra" : " triangles")
+           std::cout << in->path << ": ok (" << (order2 ? "order 2, " : "")
+                     << (surface ? d.tet.nb_tris() : n)
+                     << (surface      ? " triangles of a surface mesh in space"
+                         : d.dim == 3 ? " tetrahedra"
+                                      : " triangles")
                      << (quads.nb_quads ? ", " + std::to_string(quads.nb_quads) + " quadrangles"
                                         : std::string())
                      << ", " << (d.dim == 3 ? d.tet.nb_vertices() : d.tri.nb_vertices())

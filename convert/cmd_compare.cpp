@@ -14,6 +14,7 @@
 #include "bench/baselines/cgal_mesh3.h"
 #include "bench/baselines/cgal_remesh.h"
 #include "bench/baselines/netgen_optimize.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/io/histogram_png.h"
 #include "core/io/histogram_svg.h"
 #include "core/quality/quality_fields.h"
@@ -129,6 +130,10 @@ void register_compare(CLI::App& app) {
          const MeshData init = read_mesh(in->path, init_read_options(*in));
          const double mesh_seconds = seconds_since(t0);
          if (init.dim != 3) throw InputError("compare: needs a 3D tetrahedral mesh");
+         if (is_surface_mesh(init.tet))
+           throw InputError("compare: needs a 3D tetrahedral mesh; '" + in->path +
+                            "' is a surface mesh in space (no tetrahedra): `cvtmesh optimize` "
+                            "optimizes it");
          Comparison cmp{*opt, *co, init, {}};
          QualityStats s0 = quality_stats(init.tet, "Init");
          add_fe_measures(s0, init, co->fe);

@@ -12,6 +12,7 @@
 #include "core/io/gmsh_cad_boundary.h"
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/io/gmsh_session.h"
 #include "core/io/read_mesh.h"
 #include "core/io/read_sizing_reference.h"
@@ -63,6 +64,13 @@ std::vector<std::string> our_view_names(bool stale) {
     for (std::size_t i = 0; i < n; ++i) names.push_back(names[i] + kStaleSuffix);
   }
   return names;
+}
+
+void refuse_surface_only(const MeshData& data) {
+  if (data.dim == 3 && is_surface_mesh(data.tet))
+    throw InputError("model '" + data.model().name +
+                     "' is a surface-only model (triangles on surfaces that bound no volume): "
+                     "use the CLI (save the mesh, then cvtmesh optimize FILE.msh -o OUT.msh)");
 }
 
 MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
@@ -165,6 +173,7 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& given) {
   // Bad values are refused before the model is read (optimize() checks again for the dimension).
   validate(options.optimize, options.dim == 2 || options.dim == 3 ? options.dim : 0);
   MeshData data = gmsh_read_current(options);
+  refuse_surface_only(data);
   GmshOptimizeOptions o = options;
   o.optimize = resolve(o.optimize, data.dim);
   // The model's CAD, where it has one, is the free boundary's reference geometry.

@@ -50,6 +50,11 @@ struct GmshOptimizeResult {
 
 GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options = {});
 
+// Throws InputError for a surface-only model (triangles on surfaces in space that bound no
+// volume: a TetMesh without tets): the CLI optimizes it; the in-process front ends do not write a
+// surface mesh back into the live model yet.
+void refuse_surface_only(const MeshData& data);
+
 // The same in three steps, for a caller that must keep the Gmsh calls in one thread and run the
 // optimization in another (the GUI). gmsh_read_current meshes the model first if asked to,
 // restores the boundary elements a .msh saved with physical groups lacks (add_missing_facets: they

@@ -16,6 +16,7 @@
 #include "core/io/gmsh_model_elements.h"
 #include "core/io/gmsh_partition_map.h"
 #include "core/io/gmsh_repartition.h"
+#include "core/io/gmsh_surface_mesh3.h"
 #include "core/io/gmsh_session.h"
 #include "core/mesh/reorient_tets.h"
 #include "core/io/place_mid_edge_nodes.h"
@@ -211,13 +212,17 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       if (!types.empty()) max_dim = std::max(max_dim, d);
     }
     if (max_dim < 0) throw InputError(what + " has no mesh elements (empty mesh)");
-    if (dim < 0) dim = max_dim;
+    // Triangles on surfaces in space that bound no volume: a surface mesh in 3D, a TetMesh
+    // without tets (gmsh_surface_mesh3.h).
+    const bool surface3 = dim < 0 && max_dim == 2 && gmsh_surface_mesh_in_space();
+    if (dim < 0) dim = surface3 ? 3 : max_dim;
     if (dim != 2 && dim != 3)
       throw InputError(what +
                        ": only 2D triangle and 3D tetrahedral meshes are supported (highest "
                        "element dimension is " +
                        std::to_string(max_dim) + ")");
-    if (max_dim < dim) throw InputError(what + " has no " + std::to_string(dim) + "D elements");
+    if (max_dim < dim && !surface3)
+      throw InputError(what + " has no " + std::to_string(dim) + "D elements");
     out.dim = dim;
 
     for (const auto& [d, t] : ents) {
@@ -307,8 +312,15 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           throw InputError(what + ": node " + std::to_string(all_tags[i]) +
                            " has a NaN or infinite coordinate");
       if (order2 && mid_nodes.count(all_tags[i])) continue;
-      if (!index.add(all_tags[i], static_cast<int>(node_tags.size())))
+      if (!index.add(all_tags[i], static_cast<int>(node_tags.size()))) {
+        // The same node given again at the same place (a file that repeats its mesh: a view
+        // appended with it, read_msh_format.h) is the same node; elsewhere, ambiguous.
+        const int first = index.find(all_tags[i]);
+        if (std::equal(&all_xyz[3 * i], &all_xyz[3 * i] + 3,
+                       &xyz[3 * static_cast<std::size_t>(first)]))
+          continue;
         throw InputError(what + ": node tag " + std::to_string(all_tags[i]) + " is duplicated");
+      }
       node_tags.push_back(all_tags[i]);
       xyz.insert(xyz.end(), &all_xyz[3 * i], &all_xyz[3 * i] + 3);
       vclass.push_back({static_cast<std::int8_t>(dim), 0});
@@ -465,8 +477,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       record_cell_parts(cell_tags, cell_parts, info.partitioning);
     }
     bool kept_cells = false;
-    for (const auto& b : info.extra) kept_cells |= b.dim == dim;
-    if (cells.empty() && !kept_cells)
+    for (const auto& b : info.extra) kept_cells |= b.dim == dim || (surface3 && b.dim == 2);
+    if (cells.empty() && !kept_cells && !(surface3 && !facets.empty()))
       throw InputError(what + " has no " + std::string(dim == 3 ? "tetrahedra" : "triangles") +
                        " (empty mesh)");
 
@@ -482,7 +494,12 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       m.tri_surface = std::move(facet_entity);
       m.tri_tags = std::move(facet_tags);
       m.model = std::move(info);
-      keep_loose_triangles(m);
+      if (surface3)
+        m.model.read_notes.push_back(
+            what + " holds triangles on surfaces in space that bound no volume: read as a " +
+            "surface mesh in space");
+      else
+        keep_loose_triangles(m);
       // Tets in the other vertex order are turned positive (check_mesh then says whether they
       // form a mesh: a tangled one overlaps); flat ones are refused.
       const Reoriented ro = reorient_tets(m);

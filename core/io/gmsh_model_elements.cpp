@@ -3,10 +3,46 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <functional>
+#include <unordered_map>
 #include <map>
 #include <numeric>
 
 namespace cvtmesh {
+namespace {
+
+// A file that repeats its mesh (a view appended with the mesh written again: read_msh_format.h)
+// comes back from Gmsh 4.8 with every element of an entity twice, although it logs them as
+// skipped: a repeat of a tag with the same nodes is dropped. (A repeat with other nodes stays,
+// for the reader's checks to refuse.) Tags in increasing order, the usual case, hold no repeat.
+void drop_repeated_elements(std::vector<GmshEntityElements>& out) {
+  for (GmshEntityElements& e : out)
+    for (std::size_t k = 0; k < e.types.size(); ++k) {
+      std::vector<std::size_t>& tags = e.tags[k];
+      if (tags.empty() ||
+          std::adjacent_find(tags.begin(), tags.end(), std::greater_equal<>()) == tags.end())
+        continue;
+      const std::size_t n = e.nodes[k].size() / tags.size();
+      std::unordered_map<std::size_t, std::size_t> first;
+      std::vector<std::size_t> kept_tags, kept_nodes;
+      std::vector<int> kept_parts;
+      const bool parts = !e.parts.empty() && e.parts[k].size() == tags.size();
+      for (std::size_t i = 0; i < tags.size(); ++i) {
+        const auto [it, fresh] = first.emplace(tags[i], i);
+        if (!fresh &&
+            std::equal(&e.nodes[k][n * i], &e.nodes[k][n * i] + n, &e.nodes[k][n * it->second]))
+          continue;
+        kept_tags.push_back(tags[i]);
+        kept_nodes.insert(kept_nodes.end(), &e.nodes[k][n * i], &e.nodes[k][n * i] + n);
+        if (parts) kept_parts.push_back(e.parts[k][i]);
+      }
+      tags = std::move(kept_tags);
+      e.nodes[k] = std::move(kept_nodes);
+      if (parts) e.parts[k] = std::move(kept_parts);
+    }
+}
+
+}  // namespace
 
 std::vector<GmshEntityElements> read_model_elements(
     const std::vector<std::pair<int, int>>& entities, const GmshPartitionMap& map) {
@@ -46,6 +82,7 @@ std::vector<GmshEntityElements> read_model_elements(
       e.nodes[i].insert(e.nodes[i].end(), nodes[k].begin(), nodes[k].end());
     }
   }
+  drop_repeated_elements(out);
   if (!map.partitioned()) return out;
   // The model entities in the order of `entities` (where they are listed), as unpartitioned.
   std::map<GmshDimTag, std::size_t> position;

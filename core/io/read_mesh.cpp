@@ -23,6 +23,7 @@
 #include "core/io/finish_mesh.h"
 #include "core/io/format_registry.h"
 #include "core/io/gmsh_mesh_volumes.h"
+#include "core/io/gmsh_surface_mesh3.h"
 #include "core/io/gmsh_missing_facets.h"
 #include "core/io/gmsh_model.h"
 #include "core/io/gmsh_partition_map.h"
@@ -129,7 +130,15 @@ const char* write_only_format(const std::string& ext) {
 // A surface file: tetrahedralized by Gmsh (3D), or a planar triangle mesh read as 2D (--dim 2).
 MeshData read_surface_file(const std::string& path, const ReadOptions& options) {
   const std::string what = "'" + path + "'";
-  if (options.dim != 2) return tetrahedralize_surface(read_surface(path, true), what, options);
+  if (options.dim != 2) {
+    // A closed surface: the volume inside it meshed. An open one not in a plane z = const: a
+    // surface mesh in space (gmsh_surface_mesh3.h). An open plane one stays refused (--dim 2
+    // reads it as 2D).
+    SurfaceMesh s = read_surface(path, false);
+    if (surface_closes_up(s)) return tetrahedralize_surface(s, what, options);
+    if (z_range(s.xyz).planar) read_surface(path, true);  // throws "not closed"
+    return surface_mesh_in_space(s, std::filesystem::path(path).stem().string(), what);
+  }
   const SurfaceMesh s = read_surface(path, false);
   MeshData d;
   d.dim = 2;
@@ -230,6 +239,7 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   } remove_wrapper{wrapper_dir, wrapper};
   std::vector<int> views_before;
   gmsh::view::getTags(views_before);
+  std::string repeated_mesh_note;
   // The views the file brought ($NodeData, $ElementData): read into the mesh, then removed.
   auto new_views = [&] {
     std::vector<int> views, fresh;
@@ -255,14 +265,25 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     }
     // Gmsh keeps the first of two nodes or elements with one tag and only logs it: ambiguous
     // data, refused (the log holds messages only when our session started the logger).
+    // A file that repeats its mesh identically (a view appended with the mesh written again)
+    // is read once, with a note.
     gmsh::logger::get(log);
+    bool repeats_checked = false;
     for (std::size_t i = std::min(log_before.size(), log.size()); i < log.size(); ++i)
       for (const char* dup : {"Skipping duplicate node", "Skipping duplicate element"})
-        if (const auto at = log[i].find(dup); at != std::string::npos)
-          throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) + ")");
+        if (const auto at = log[i].find(dup); at != std::string::npos && !repeats_checked) {
+          if (!msh_repeats_identical_sections(path))
+            throw InputError("'" + path + "': tags are not unique (Gmsh: " + log[i].substr(at) +
+                             ")");
+          repeats_checked = true;
+          repeated_mesh_note = "'" + path +
+                               "' holds its mesh more than once, every copy the same (a view "
+                               "appended with the mesh): read once";
+        }
   });
   ElementOrigin origin = ElementOrigin::kModel;
   std::vector<std::string> read_notes;
+  if (!repeated_mesh_note.empty()) read_notes.push_back(repeated_mesh_note);
   std::vector<std::array<int, 3>> file_blocks;
   try {
     gmsh_checked("cannot mesh '" + path + "'", [&] {
@@ -317,17 +338,47 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
                              "tetrahedra: cvtmesh does not mesh the volumes of a partitioned " +
                              "surface mesh; save it unpartitioned (without -part), or mesh the " +
                              "volumes first (gmsh -3 -part N)");
-          const std::vector<int> volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
-          for (int v : volumes) file_blocks.push_back({3, v, 4});
-          std::sort(file_blocks.begin(), file_blocks.end());
-          read_notes.push_back(
-              "'" + path + "' holds surfaces and no tetrahedra: " + std::to_string(volumes.size()) +
-              " volume(s) inside them meshed by Gmsh, the surface mesh kept");
+          // Surfaces Gmsh cannot mesh the inside of (they bound no volume: overlapping or
+          // crossing sheets, quadrangles) are read as they are, a surface mesh in space
+          // (gmsh_surface_mesh3.h), from the file opened again.
+          std::vector<int> volumes;
+          std::string refused;
+          try {
+            volumes = mesh_volumes_of_surface_mesh("'" + path + "'", options);
+          } catch (const InputError& e) {
+            refused = e.what();
+          } catch (...) {
+            // Gmsh's own failure: its last logged error says what.
+            std::string last;
+            try {
+              gmsh::logger::getLastError(last);
+            } catch (...) {
+            }
+            refused = last.empty() ? std::string("Gmsh failed") : last;
+          }
+          if (refused.empty()) {
+            for (int v : volumes) file_blocks.push_back({3, v, 4});
+            std::sort(file_blocks.begin(), file_blocks.end());
+            read_notes.push_back("'" + path + "' holds surfaces and no tetrahedra: " +
+                                 std::to_string(volumes.size()) +
+                                 " volume(s) inside them meshed by Gmsh, the surface mesh kept");
+          } else {
+            std::string name;
+            gmsh::model::getCurrent(name);
+            gmsh::model::remove();
+            gmsh::model::add(name);
+            gmsh::merge(path);
+            read_notes.push_back("'" + path + "': the volumes inside its surfaces cannot be " +
+                                 "meshed (" + refused + "): read as a surface mesh");
+          }
         }
         // A .msh saved with physical groups may lack the boundary elements of other surfaces.
         int want = options.dim;
         if (want < 0) want = has_elements(3) ? 3 : 2;
-        add_missing_facets(want);
+        // Not for a surface mesh in space: its open borders need no line elements (the file's
+        // are kept as they are; a compound curve of t12 would get one line more).
+        if (!(options.dim < 0 && want == 2 && gmsh_surface_mesh_in_space()))
+          add_missing_facets(want);
       }
     });
     data = mesh_from_gmsh(options.dim, "'" + path + "'");

@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <map>
+#include <string_view>
 
 namespace cvtmesh {
 
@@ -54,6 +57,43 @@ int read_msh_partition_count(const std::string& path) {
     if (head.find("\n$Nodes") != std::string::npos) break;
   }
   return 0;
+}
+
+bool msh_repeats_identical_sections(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Each section: from its "$Name" line to its "$EndName" line, both at the start of a line.
+  // Binary data may hold those bytes by chance: a wrong split only makes the copies differ.
+  std::map<std::string, std::string_view> first;
+  bool repeated = false;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    if (text[pos] == '$' && (pos == 0 || text[pos - 1] == '\n') &&
+        text.compare(pos, 4, "$End") != 0) {
+      const std::size_t eol = text.find_first_of("\r\n", pos);
+      if (eol == std::string::npos) break;
+      const std::string name = text.substr(pos + 1, eol - pos - 1);
+      const std::string end = "\n$End" + name;
+      const std::size_t stop = text.find(end, eol);
+      if (stop == std::string::npos) return false;
+      const std::string_view body(text.data() + eol, stop - eol);
+      if (name != "MeshFormat" && name != "NodeData" && name != "ElementData" &&
+          name != "ElementNodeData") {
+        auto [it, fresh] = first.emplace(name, body);
+        if (!fresh) {
+          if (it->second != body) return false;
+          repeated = true;
+        }
+      }
+      pos = stop + end.size();
+      continue;
+    }
+    const std::size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) break;
+    pos = nl + 1;
+  }
+  return repeated;
 }
 
 }  // namespace cvtmesh

@@ -1,3 +1,4 @@
+#include "core/mesh/check_surface_mesh.h"
 #include "core/io/surface_io.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -90,7 +91,14 @@ SurfaceMesh boundary_surface(const MeshData& data) {
   std::vector<int> faces;
   std::vector<double> coords;
   int nv = 0;
-  if (data.dim == 3) {
+  if (data.dim == 3 && is_surface_mesh(data.tet)) {
+    // A surface mesh in space: its triangles as they turn.
+    const TetMesh& m = data.tet;
+    for (int f = 0; f < m.nb_tris(); ++f)
+      if (m.tris[3 * f] >= 0) faces.insert(faces.end(), &m.tris[3 * f], &m.tris[3 * f] + 3);
+    coords = m.xyz;
+    nv = m.nb_vertices();
+  } else if (data.dim == 3) {
     const TetMesh* m = &data.tet;
     TetMesh copy;
     if (m->adj.size() != m->tets.size()) {

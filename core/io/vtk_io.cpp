@@ -1,3 +1,4 @@
+#include "core/mesh/check_surface_mesh.h"
 #include "core/io/vtk_io.h"
 
 #include <algorithm>
@@ -39,7 +40,19 @@ struct Cells {
 
 Cells cells_of(const MeshData& data, const std::vector<ElementField>& fields) {
   Cells c;
-  if (data.dim == 3) {
+  if (data.dim == 3 && is_surface_mesh(data.tet)) {
+    // A surface mesh in space: its triangles, the surface tag as the region.
+    const TetMesh& m = data.tet;
+    c.nv = m.nb_vertices();
+    c.npe = 3;
+    c.type = kVtkTriangle;
+    c.xyz = m.xyz;
+    for (int f = 0; f < m.nb_tris(); ++f)
+      if (m.tris[3 * f] >= 0) {
+        c.conn.insert(c.conn.end(), &m.tris[3 * f], &m.tris[3 * f] + 3);
+        c.region.push_back(m.tri_surface[f]);
+      }
+  } else if (data.dim == 3) {
     const TetMesh& m = data.tet;
     c.nv = m.nb_vertices();
     c.npe = 4;

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "core/geometry/predicates.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/mesh/face_key.h"
 
 namespace cvtmesh {
@@ -33,6 +34,7 @@ int last_non_positive_tet(const TetMesh& m) {
 }
 
 MeshCheck check_mesh(const TetMesh& m) {
+  if (is_surface_mesh(m)) return check_surface_mesh(m);
   MeshCheck r;
   const int nv = m.nb_vertices(), nt = m.nb_tets();
   if (static_cast<int>(m.tet_region.size()) != nt) problem(r, "tet_region size differs from #T");

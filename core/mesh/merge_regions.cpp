@@ -13,7 +13,8 @@ namespace {
 
 // The parent vertex of each vertex of `sub` (appending the new ones to parent); moves the parent's
 // vertices to their optimized positions.
-std::vector<int> merge_vertices(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub) {
+std::vector<int> merge_vertices(TetMesh& parent, const RegionSubmesh& x, const TetMesh& sub,
+                                bool allow_lost) {
   const int ns = static_cast<int>(x.to_parent.size());
   // Each vertex of the result: a parent vertex (its tag i + 1) or a new one (tag 0), appended.
   std::vector<int> to_parent(sub.nb_vertices(), -1);
@@ -28,8 +29,11 @@ std::vector<int> merge_vertices(TetMesh& parent, const RegionSubmesh& x, const T
     seen[tag - 1] = 1;
     to_parent[v] = x.to_parent[tag - 1];
   }
-  if (std::find(seen.begin(), seen.end(), 0) != seen.end())
-    throw InvariantError("merge_regions: the optimized part lost a vertex");
+  // A free boundary's surface coarsening may remove a surface vertex (it stays in the parent,
+  // in no element, for the caller to drop); an interface vertex never goes.
+  for (int i = 0; i < ns; ++i)
+    if (!seen[i] && (!allow_lost || x.mesh.vclass[i].entity < 0))
+      throw InvariantError("merge_regions: the optimized part lost a vertex");
   // The parent's vertices take their new positions (their classification stays: the sub's
   // boundary was kept); the pinned ones (the interface) must not have moved.
   for (int v = 0; v < sub.nb_vertices(); ++v) {
@@ -145,7 +149,7 @@ void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& xs,
     }
   std::vector<std::vector<int>> to_parent(xs.size());
   for (std::size_t i = 0; i < xs.size(); ++i) {
-    to_parent[i] = merge_vertices(parent, *xs[i], *subs[i]);
+    to_parent[i] = merge_vertices(parent, *xs[i], *subs[i], boundary_moved);
     check_carried_triangles(parent, *xs[i], *subs[i], to_parent[i], boundary_moved);
   }
   // Tets: the unselected ones in their order, then each sub's.

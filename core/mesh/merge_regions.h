@@ -16,7 +16,9 @@ void merge_regions(TetMesh& parent, const RegionSubmesh& extracted, const TetMes
 // part added appended part after part. With boundary_moved, a part may have changed the parent's
 // triangles it carried (a free boundary: vertices moved on their surfaces, surface edges flipped):
 // those are replaced by the part's (the parent's other triangles first, in order, then each
-// part's); without it they must come back the same. Either way the faces a part had on its
+// part's), and a part may have removed some of its surface vertices (the coarsening: they stay
+// in the parent, in no element, for the caller to drop), never a pinned one; without it they
+// must come back the same. Either way the faces a part had on its
 // interface with the others (extract_tets' added faces) must come back exactly, or the parts
 // would not fit together: InvariantError.
 void merge_parts(TetMesh& parent, const std::vector<const RegionSubmesh*>& extracted,

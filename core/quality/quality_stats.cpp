@@ -1,5 +1,7 @@
 #include "core/quality/quality_stats.h"
 
+#include "core/mesh/check_surface_mesh.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -47,7 +49,32 @@ struct QCounts {
 
 }  // namespace
 
+namespace {
+
+// A surface mesh in space (a TetMesh without tets: check_surface_mesh.h): its elements are its
+// triangles, measured in 3D.
+std::vector<double> surface_qualities(const TetMesh& mesh, Measure m) {
+  std::vector<double> q;
+  q.reserve(mesh.nb_tris());
+  for (int f = 0; f < mesh.nb_tris(); ++f) {
+    const int* v = &mesh.tris[3 * f];
+    if (v[0] < 0) continue;
+    q.push_back(tri_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), 3, m));
+  }
+  return q;
+}
+
+QualityStats surface_stats(const TetMesh& mesh, const std::string& label) {
+  return quality_stats_from_values(surface_qualities(mesh, Measure::kQ),
+                                   surface_qualities(mesh, Measure::kRadiusRatio),
+                                   surface_qualities(mesh, Measure::kMinAngle),
+                                   surface_qualities(mesh, Measure::kMaxAngle), 2, label);
+}
+
+}  // namespace
+
 std::vector<double> element_qualities(const TetMesh& mesh, Measure m) {
+  if (is_surface_mesh(mesh)) return surface_qualities(mesh, m);
   // Per-tet slots filled in parallel, then the dead slots squeezed out in order: the same values
   // in the same order for any number of threads.
   const int nt = mesh.nb_tets();
@@ -185,14 +212,21 @@ QualityStats reduce_tets(const TetMesh& mesh, const std::string& label, bool tab
 }  // namespace
 
 QualityStats quality_stats(const TetMesh& mesh, const std::string& label) {
+  if (is_surface_mesh(mesh)) return surface_stats(mesh, label);
   return reduce_tets(mesh, label, true);
 }
 
 QualityStats quality_summary(const TetMesh& mesh, const std::string& label) {
+  if (is_surface_mesh(mesh)) return surface_stats(mesh, label);
   return reduce_tets(mesh, label, false);
 }
 
 double min_quality(const TetMesh& mesh, Measure m) {
+  if (is_surface_mesh(mesh)) {
+    double lo = std::numeric_limits<double>::infinity();
+    for (double q : surface_qualities(mesh, m)) lo = std::min(lo, q);
+    return lo;
+  }
   const int nt = mesh.nb_tets();
   double lo = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static, 1024) reduction(min : lo) if (nt > 1024)

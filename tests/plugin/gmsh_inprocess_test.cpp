@@ -294,6 +294,31 @@ TEST_F(GmshInProcess, ModelWithoutMeshIsAnErrorUnlessGenerateIsAsked) {
   EXPECT_FALSE(nodes(3).empty());
 }
 
+// A surface-only model (an open sphere octant: triangles that bound no volume) is refused with a
+// message that points to the CLI, and the model is left as it was.
+TEST_F(GmshInProcess, SurfaceOnlyModelIsRefusedWithAPointerToTheCli) {
+  const std::string geo = testing::temp_dir() + "/octant.geo";
+  std::FILE* f = std::fopen(geo.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs(
+      "Point(1) = {0, 0, 0, 0.2};\nPoint(2) = {1, 0, 0, 0.2};\nPoint(3) = {0, 1, 0, 0.2};\n"
+      "Point(4) = {0, 0, 1, 0.2};\nCircle(1) = {2, 1, 3};\nCircle(2) = {3, 1, 4};\n"
+      "Circle(3) = {4, 1, 2};\nCurve Loop(1) = {1, 2, 3};\nSurface(1) = {1};\n",
+      f);
+  std::fclose(f);
+  gmsh::open(geo);
+  gmsh::model::mesh::generate(2);
+  const auto before = nodes(2);
+  GmshOptimizeOptions o;
+  try {
+    gmsh_optimize(o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("use the CLI"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(nodes(2), before);
+}
+
 // A .msh saved with physical groups holds only their elements: reopened in a script, the two-region
 // cube_sphere lacks the cube faces (no group). The in-process path restores them as the CLI's
 // reader does, so the model optimizes instead of being refused as "boundary not closed".

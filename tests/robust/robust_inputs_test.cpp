@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <iterator>
 #include <string>
@@ -17,6 +18,8 @@
 #include "core/io/write_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/find_structural_defects.h"
+#include "core/pipeline/volumes_apart.h"
+#include "core/mesh/extract_regions.h"
 #include "core/pipeline/optimize.h"
 #include "core/pipeline/verify_mesh.h"
 #include "core/quality/quality_stats.h"
@@ -93,23 +96,63 @@ TEST(StructuralDefects, FindsCoincidentNodesOfPartsInContact) {
 // OCC boxes without a boolean: Gmsh meshes each volume on its own boundary.
 const char* kBox = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0,0,0,1,1,1};\n";
 
-TEST(RobustInputs, SelfIntersectingBoundaryIsOptimizedByLocalOperationsOnly) {
+// The volumes of `m` and their numbers of tets.
+std::map<int, int> tets_per_volume(const TetMesh& m) {
+  std::map<int, int> n;
+  for (int t = 0; t < m.nb_tets(); ++t) ++n[m.tet_region[t]];
+  return n;
+}
+
+// Two boxes overlapping (OCC, no boolean): each volume's mesh is valid alone, the whole cannot be
+// rebuilt; each volume is optimized apart, the overlap reported as a warning by `check`.
+TEST(RobustInputs, OverlappingVolumesAreOptimizedEachApart) {
   MeshData d = read_mesh(write_geo("overlap", std::string(kBox) + "Box(2) = {0.5,0.5,0.5,1,1,1};\n"
                                                                   "Mesh.MeshSizeMax = 0.3;\n"));
   ASSERT_FALSE(find_structural_defects(d.tet).intersecting_tris.empty());
+  EXPECT_EQ(volumes_defective_only_together(d.tet), (std::vector<int>{1, 2}));
+  const TetMesh input = d.tet;
   const OptimizeResult r = optimize(d, quick());
-  EXPECT_TRUE(has_note(r, "local operations only")) << (r.notes.empty() ? "" : r.notes[0]);
-  EXPECT_TRUE(has_note(r, "intersect"));
+  EXPECT_TRUE(has_note(r, "each volume optimized apart")) << (r.notes.empty() ? "" : r.notes[0]);
+  EXPECT_FALSE(has_note(r, "local operations only"));
+  EXPECT_FALSE(r.kept_input);
   expect_valid_and_no_worse(d, r);
+  EXPECT_GT(r.after.q_avg, r.before.q_avg);
+  // Both volumes there, each still valid alone (the overlap is the input's, nothing new).
+  const std::map<int, int> before = tets_per_volume(input), after = tets_per_volume(d.tet);
+  ASSERT_EQ(after.size(), before.size());
+  for (const auto& [tag, n] : after) {
+    EXPECT_GT(n, 0) << "volume " << tag;
+    const TetMesh alone = extract_regions(d.tet, {tag}).mesh;
+    EXPECT_TRUE(check_mesh(alone).ok) << "volume " << tag;
+    EXPECT_TRUE(find_structural_defects(alone).empty()) << "volume " << tag;
+  }
+  EXPECT_EQ(volumes_defective_only_together(d.tet), (std::vector<int>{1, 2}));
 }
 
-TEST(RobustInputs, CoincidentNodesOfTouchingPartsAreOptimizedWithoutRebuild) {
+// One volume whose own boundary crosses itself: local operations only (no rebuild).
+TEST(RobustInputs, SelfIntersectingBoundaryOfOneVolumeIsNotTakenForOverlappingVolumes) {
+  TetMesh m = testing::make_tet_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}});
+  const int n = m.nb_vertices(), nf = m.nb_tris();
+  for (int v = 0; v < n; ++v)
+    m.xyz.insert(m.xyz.end(),
+                 {m.xyz[3 * v] + 0.2, m.xyz[3 * v + 1] + 0.1, m.xyz[3 * v + 2] + 0.05});
+  for (int f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) m.tris.push_back(m.tris[3 * f + k] + n);
+    m.tri_surface.push_back(2);
+  }
+  ASSERT_FALSE(find_structural_defects(m).empty());
+  EXPECT_TRUE(volumes_defective_only_together(m).empty());
+}
+
+TEST(RobustInputs, CoincidentNodesOfTouchingPartsAreOptimizedEachApart) {
   MeshData d = read_mesh(write_geo("touch", std::string(kBox) + "Box(2) = {1,0,0,1,1,1};\n"
                                                                 "Mesh.MeshSizeMax = 0.3;\n"));
   ASSERT_FALSE(find_structural_defects(d.tet).coincident_vertices.empty());
   const OptimizeResult r = optimize(d, quick("cvdt"));
   EXPECT_TRUE(has_note(r, "coincide"));
+  EXPECT_TRUE(has_note(r, "each volume optimized apart"));
   expect_valid_and_no_worse(d, r);
+  EXPECT_EQ(tets_per_volume(d.tet).size(), 2u);
 }
 
 TEST(RobustInputs, OrphanNodesAreNotPassedToTetgenAndAreKept) {
@@ -463,6 +506,77 @@ TEST(RobustInputs, NegativelyOrientedTetsAreTurnedPositiveNotRefused) {
           << log;
       EXPECT_EQ(testing::run(testing::cli_path() + " check " + out, &log), 0) << log;
     }
+}
+
+// Gmsh's view.write(..., append = true) writes the mesh again in front of the view by default
+// (PostProcessing.SaveMesh = 1): every section twice, the same. Read once, with a note; a repeat
+// that differs is still refused.
+TEST(RobustInputs, MeshRepeatedIdenticallyBeforeAViewIsReadOnce) {
+  const MeshData box = read_mesh(write_geo("rep", std::string(kBox) + "Mesh.MeshSizeMax = 0.4;\n"));
+  const std::string once = testing::temp_dir() + "/rep_once.msh";
+  write_mesh(box, once);
+  std::ifstream in(once);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string view =
+      "$NodeData\n1\n\"T\"\n1\n0\n3\n0\n1\n" + std::to_string(box.tet.nb_vertices()) + "\n";
+  for (int v = 0; v < box.tet.nb_vertices(); ++v)
+    view += std::to_string(v + 1) + " " + std::to_string(v) + "\n";
+  view += "$EndNodeData\n";
+  const std::string twice = testing::temp_dir() + "/rep_twice.msh";
+  std::ofstream(twice) << text << text << view;
+  const MeshData d = read_mesh(twice);
+  EXPECT_EQ(d.tet.nb_tets(), box.tet.nb_tets());
+  EXPECT_EQ(d.tet.nb_vertices(), box.tet.nb_vertices());
+  EXPECT_EQ(d.tet.nb_tris(), box.tet.nb_tris());
+  EXPECT_TRUE(check_mesh(d.tet).ok);
+  EXPECT_EQ(d.model().views.size(), 1u);
+  bool noted = false;
+  for (const auto& n : d.model().read_notes) noted |= n.find("more than once") != std::string::npos;
+  EXPECT_TRUE(noted);
+  // The repeat with one node moved: ambiguous, refused.
+  std::string moved = text;
+  const std::size_t line = moved.find("\n0 0 0\n", moved.find("$Nodes"));
+  ASSERT_NE(line, std::string::npos);
+  moved.replace(line, 7, "\n0.5 0 0\n");
+  const std::string differs = testing::temp_dir() + "/rep_differs.msh";
+  std::ofstream(differs) << text << moved << view;
+  try {
+    read_mesh(differs);
+    ADD_FAILURE() << "a repeat that differs was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not unique"), std::string::npos) << e.what();
+  }
+}
+
+// A crack made by Gmsh's Crack plugin: two volumes whose interface is split on the crack, its
+// nodes duplicated there. Each volume is optimized apart and the crack's lips keep matching: every
+// pair of coincident nodes of the input is still a pair at the same place.
+TEST(RobustInputs, CrackLipsKeepMatchingWhenEachVolumeIsOptimizedApart) {
+  MeshData d = read_mesh(
+      write_geo("crack", std::string(kBox) +
+                             "Box(2) = {0,0,-1,1,1,1};\nRectangle(100) = {0.25,0.25,0,0.5,0.5};\n"
+                             "BooleanFragments{ Volume{1,2}; Surface{100}; Delete; }{}\n"
+                             "s() = Surface In BoundingBox{0.2,0.2,-0.01,0.8,0.8,0.01};\n"
+                             "Physical Surface(1) = {s()};\nMesh.MeshSizeMax = 0.2;\nMesh 3;\n"
+                             "Plugin(Crack).Dimension = 2;\nPlugin(Crack).PhysicalGroup = 1;\n"
+                             "Plugin(Crack).Run;\n"));
+  const StructuralDefects before = find_structural_defects(d.tet);
+  ASSERT_FALSE(before.coincident_vertices.empty());
+  const TetMesh input = d.tet;
+  const OptimizeResult r = optimize(d, quick());
+  EXPECT_TRUE(has_note(r, "each volume optimized apart"));
+  EXPECT_FALSE(r.kept_input);
+  expect_valid_and_no_worse(d, r);
+  EXPECT_FALSE(volumes_defective_only_together(d.tet).empty());
+  // The lips: each input pair of coincident nodes has both nodes, unmoved, in the output.
+  std::map<std::array<double, 3>, int> at;
+  for (int v = 0; v < d.tet.nb_vertices(); ++v)
+    ++at[{d.tet.point(v)[0], d.tet.point(v)[1], d.tet.point(v)[2]}];
+  for (const auto& [a, b] : before.coincident_vertices) {
+    const double* p = input.point(a);
+    EXPECT_EQ((at[{p[0], p[1], p[2]}]), 2) << "node " << a;
+    (void)b;
+  }
 }
 
 }  // namespace
