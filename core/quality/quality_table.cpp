@@ -1,6 +1,7 @@
 #include "core/quality/quality_table.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -172,7 +173,14 @@ std::string QualityTable::to_json() const {
     c["cg_iterations"] =
         s.fe_measured ? nlohmann::ordered_json(s.cg_iterations) : nlohmann::ordered_json(nullptr);
     c["stiffness_condition"] = fe(s.stiffness_condition);
-    for (const auto& [k, v] : s.extra) c[k] = v;
+    // The extra rows under snake_case keys as the others ("quad scaled Jacobian min" ->
+    // "quad_scaled_jacobian_min").
+    for (const auto& [k, v] : s.extra) {
+      std::string key = k;
+      for (char& ch : key)
+        ch = ch == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      c[key] = v;
+    }
     j.push_back(c);
   }
   return j.dump(2) + "\n";

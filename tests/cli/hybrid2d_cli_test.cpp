@@ -174,8 +174,8 @@ TEST(Hybrid2dCli, AllQuadrangleMeshIsSmoothedNeverWorseWithEverythingKept) {
       << out;
   const nlohmann::json j = nlohmann::json::parse(out.substr(out.find('{')));
   EXPECT_EQ(j.at("quadrangles").get<double>(), static_cast<double>(mb.nb_quads));
-  EXPECT_NEAR(j.at("quad scaled Jacobian min").get<double>(), mb.sj_min, 1e-12);
-  EXPECT_NEAR(j.at("quad scaled Jacobian avg").get<double>(), mb.sj_avg(), 1e-12);
+  EXPECT_NEAR(j.at("quad_scaled_jacobian_min").get<double>(), mb.sj_min, 1e-12);
+  EXPECT_NEAR(j.at("quad_scaled_jacobian_avg").get<double>(), mb.sj_avg(), 1e-12);
 }
 
 // Two surfaces sharing curve 2, the left one recombined; and a disk recombined with the simple
