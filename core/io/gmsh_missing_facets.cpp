@@ -136,6 +136,48 @@ long add_missing_facets(int dim) {
   const std::vector<std::size_t>& start = fb.start;
   // Facets that are elements already (their first record marked); the largest element tag.
   std::vector<char> present(sorted.size(), 0);
+  auto mark = [&](std::size_t a, std::size_t b, std::size_t c) {
+    std::uint32_t key[3] = {ids.find(a), ids.find(b), ids.find(c)};
+    for (std::uint32_t x : key)
+      if (x == DenseIds::kNone) return;
+    std::sort(key, key + 3);
+    const FaceRecord probe{key[1], key[2], 0};
+    auto first = sorted.begin() + start[key[0]], last = sorted.begin() + start[key[0] + 1];
+    auto it = std::lower_bound(first, last, probe);
+    if (it != last && same_face(*it, probe)) present[it - sorted.begin()] = 1;
+  };
+  // The faces of the kept 3D cells, by their corners (Gmsh's node order; order 2 has the
+  // corners first): triangles as they are, quadrangles as the four triangles of three corners.
+  auto mark_kept_cell_faces = [&](int type, const std::vector<std::size_t>& nodes,
+                                  std::size_t count) {
+    static const std::vector<std::vector<int>> kHex = {{0, 3, 2, 1}, {0, 1, 5, 4}, {0, 4, 7, 3},
+                                                       {1, 2, 6, 5}, {2, 3, 7, 6}, {4, 5, 6, 7}};
+    static const std::vector<std::vector<int>> kPrism = {
+        {0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {0, 3, 5, 2}, {1, 2, 5, 4}};
+    static const std::vector<std::vector<int>> kPyramid = {
+        {0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+    const std::vector<std::vector<int>>* faces = nullptr;
+    if (type == 5 || type == 12 || type == 17) faces = &kHex;
+    if (type == 6 || type == 13 || type == 18) faces = &kPrism;
+    if (type == 7 || type == 14 || type == 19) faces = &kPyramid;
+    if (!faces || count == 0) return;
+    const std::size_t nn = nodes.size() / count;
+    for (std::size_t e = 0; e < count; ++e) {
+      const std::size_t* c = &nodes[nn * e];
+      for (const auto& f : *faces) {
+        if (f.size() == 3) {
+          mark(c[f[0]], c[f[1]], c[f[2]]);
+          continue;
+        }
+        for (int skip = 0; skip < 4; ++skip) {
+          std::size_t t[3];
+          for (int j = 0, n = 0; j < 4; ++j)
+            if (j != skip) t[n++] = c[f[j]];
+          mark(t[0], t[1], t[2]);
+        }
+      }
+    }
+  };
   std::size_t max_tag = 0;
   // A partitioned model: entity by entity, the facets of ghost and interface entities are not
   // the model's (Gmsh 4.8 may put a facet of a model surface that is also an interface between
@@ -152,6 +194,10 @@ long add_missing_facets(int dim) {
       // In 2D, a triangle edge on a quadrangle (a hybrid mesh: kept_quads.h) is no missing
       // line: the quadrangle is kept, and that edge constrained (constrain_kept_quad_edges.h).
       const bool quad = dim == 2 && types[k] == 3;
+      // In 3D, a tet face on a kept cell (hybrid: a prism's or pyramid's triangle, or half of a
+      // hexahedron's, prism's or pyramid's quadrangle) is no missing triangle either: the cell is
+      // kept and that face constrained (constrain_kept_cell_faces.h), not written.
+      if (model && dim == 3) mark_kept_cell_faces(types[k], enodes[k], etags[k].size());
       if (!model || (types[k] != facet_type && types[k] != facet_type2 && !quad)) continue;
       const std::size_t nn = enodes[k].size() / std::max<std::size_t>(etags[k].size(), 1);
       for (std::size_t e = 0; e < etags[k].size(); ++e)

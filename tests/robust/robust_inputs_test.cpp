@@ -17,6 +17,7 @@
 #include "core/io/read_mesh.h"
 #include "core/io/write_mesh.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/constrain_kept_cell_faces.h"
 #include "core/pipeline/find_structural_defects.h"
 #include "core/pipeline/volumes_apart.h"
 #include "core/mesh/extract_regions.h"
@@ -577,6 +578,35 @@ TEST(RobustInputs, CrackLipsKeepMatchingWhenEachVolumeIsOptimizedApart) {
     EXPECT_EQ((at[{p[0], p[1], p[2]}]), 2) << "node " << a;
     (void)b;
   }
+}
+
+// Gmsh's demo pripyrtet: a square revolved about one of its sides with Recombine — prisms,
+// pyramids at the axis and tets. The tets' faces on the pyramids are no missing boundary
+// triangles: the output holds the input's triangles per surface, no more (stop 43: 8 more on each
+// of the two end surfaces were written).
+TEST(RobustInputs, TetFacesOnKeptCellsAreNotAddedAsBoundaryTriangles) {
+  const MeshData g = read_mesh(
+      write_geo("pripyrtet",
+                "lc = 0.3;\nPoint(1) = {0,0,0,lc};\nPoint(2) = {1,0,0,lc};\n"
+                "Point(3) = {1,1,0,0.5*lc};\nPoint(4) = {0,1,0,lc};\nLine(1) = {4,3};\n"
+                "Line(2) = {3,2};\nLine(3) = {2,1};\nLine(4) = {1,4};\n"
+                "Curve Loop(5) = {2,3,4,1};\nPlane Surface(6) = {5};\n"
+                "Extrude {{0,1,0}, {0,0,0}, -Pi/4}{ Surface{6}; Layers{3,1}; Recombine; }\n"));
+  ASSERT_GT(g.tet.nb_tets(), 0);
+  const std::string in = testing::temp_dir() + "/pripyrtet.msh";
+  write_mesh(g, in);
+  auto triangles_per_surface = [](const TetMesh& m) {
+    std::map<int, int> n;
+    for (int f = 0; f < m.nb_tris(); ++f)
+      if (!is_kept_cell_interface(m.tri_surface[f])) ++n[m.tri_surface[f]];
+    return n;
+  };
+  const MeshData d = read_mesh(in);
+  EXPECT_EQ(triangles_per_surface(d.tet), triangles_per_surface(g.tet));
+  const std::string out = testing::temp_dir() + "/pripyrtet_out.msh";
+  std::string log;
+  ASSERT_EQ(testing::run(testing::cli_path() + " optimize " + in + " -o " + out, &log), 0) << log;
+  EXPECT_EQ(triangles_per_surface(read_mesh(out).tet), triangles_per_surface(g.tet));
 }
 
 }  // namespace
