@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "plugin/gmsh_inprocess.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/io/quality_view_geo.h"
 #include "core/quality/quality_fields.h"
 #include "core/quality/quality_histogram.h"
@@ -160,6 +161,7 @@ int compute(plugin::RemoteOnelab& tree) {
   r.result = optimize(data, o.optimize);
   r.method = o.optimize.method;
   r.dim = data.dim;
+  r.surface_mesh = data.dim == 3 && is_surface_mesh(data.tet);
 
   const std::string out = output_path(in);
   WriteOptions w;
