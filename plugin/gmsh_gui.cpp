@@ -13,6 +13,7 @@
 #include "core/io/camera_cut.h"
 #include "core/io/geo_scan.h"
 #include "core/io/gmsh_session.h"
+#include "core/io/gmsh_surface_mesh3.h"
 #include "core/io/process_guard.h"
 #include "core/io/read_mesh.h"
 #include "core/util/error.h"
@@ -139,7 +140,20 @@ void gui_open(const std::string& path, bool allow_system_calls) {
 }
 
 int gui_model_dim() {
-  return gmsh::model::getDimension();
+  const int d = gmsh::model::getDimension();
+  if (d != 2) return d;
+  // Surfaces in space that bound no volume: a surface mesh in space, optimized as a 3D mesh
+  // (core/io/gmsh_surface_mesh3.h); meshed, its nodes say so, else the model's extent in z.
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2, -1);
+  if (!types.empty()) {
+    GmshSession session;
+    return gmsh_surface_mesh_in_space() ? 3 : 2;
+  }
+  double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const double size = std::max({x1 - x0, y1 - y0, z1 - z0});
+  return z1 - z0 > 1e-10 * size ? 3 : 2;
 }
 
 void gui_set_button(const std::string& label, const std::string& action) {

@@ -73,7 +73,8 @@ void gui_finalize();
 // A script that would start a program (SystemCall, OnelabRun, ... in it or what it includes) is
 // refused with InputError naming the file, line and command unless allow_system_calls.
 void gui_open(const std::string& path, bool allow_system_calls = false);
-// The dimension of the current model (its highest entity dimension), -1 if empty.
+// The dimension of the mesh the panel optimizes: the current model's highest entity dimension,
+// -1 if empty, but 3 for surfaces in space that bound no volume (a surface mesh in space).
 int gui_model_dim();
 // Sets the big Run button of the ONELAB panel: pressing it sets ONELAB/Action to `action`.
 void gui_set_button(const std::string& label, const std::string& action);

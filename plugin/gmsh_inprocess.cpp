@@ -66,11 +66,9 @@ std::vector<std::string> our_view_names(bool stale) {
   return names;
 }
 
-void refuse_surface_only(const MeshData& data) {
-  if (data.dim == 3 && is_surface_mesh(data.tet))
-    throw InputError("model '" + data.model().name +
-                     "' is a surface-only model (triangles on surfaces that bound no volume): "
-                     "use the CLI (save the mesh, then cvtmesh optimize FILE.msh -o OUT.msh)");
+std::vector<std::size_t> element_tags_of(const MeshData& data) {
+  if (data.dim == 2) return data.tri.tri_tags;
+  return is_surface_mesh(data.tet) ? data.tet.tri_tags : data.tet.tet_tags;
 }
 
 MeshData gmsh_read_current(const GmshOptimizeOptions& options) {
@@ -113,10 +111,12 @@ GmshOptimizeResult gmsh_write_back(const MeshData& data, const OptimizeResult& r
   out.result = result;
   out.method = options.optimize.method;
   out.dim = data.dim;
+  out.surface_mesh = data.dim == 3 && is_surface_mesh(data.tet);
   const GmshWritten written = replace_gmsh_mesh(data);
   // Views of an earlier run refer to elements that no longer exist.
   remove_quality_views();
-  if (options.quality_views)
+  // A mesh of quadrangles only (its triangles none) has no element these views measure.
+  if (options.quality_views && !written.element_tags.empty())
     out.views = add_element_views(quality_fields(data), written.element_tags);
   return out;
 }
@@ -148,8 +148,8 @@ GmshQualityResult gmsh_quality(const GmshOptimizeOptions& options) {
                                            : fe_measures(data.tri, options.fe));
   if (options.quality_views) {
     remove_quality_views();
-    out.views = add_element_views(quality_fields(data),
-                                  data.dim == 3 ? data.tet.tet_tags : data.tri.tri_tags);
+    if (out.stats.nb_elements > 0)
+      out.views = add_element_views(quality_fields(data), element_tags_of(data));
   }
   return out;
 }
@@ -173,7 +173,6 @@ GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& given) {
   // Bad values are refused before the model is read (optimize() checks again for the dimension).
   validate(options.optimize, options.dim == 2 || options.dim == 3 ? options.dim : 0);
   MeshData data = gmsh_read_current(options);
-  refuse_surface_only(data);
   GmshOptimizeOptions o = options;
   o.optimize = resolve(o.optimize, data.dim);
   // The model's CAD, where it has one, is the free boundary's reference geometry.
@@ -209,6 +208,7 @@ std::string GmshOptimizeResult::to_json() const {
   nlohmann::ordered_json j;
   j["method"] = method;
   j["dim"] = dim;
+  j["surface_mesh"] = surface_mesh;
   j["iterations"] = result.iterations;
   j["converged"] = result.converged;
   j["seconds"] = result.seconds;

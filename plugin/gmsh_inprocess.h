@@ -1,6 +1,7 @@
 // gmsh_optimize: optimizes the mesh of the CURRENT Gmsh model of this process in place — the
 // entry point of in-process scripting (C++ and the Python module `cvtmesh`) and of the GUI panel.
-// Reads the mesh through the SDK, optimizes every volume (3D) or every planar surface (2D), writes
+// Reads the mesh through the SDK, optimizes every volume (3D), every planar surface (2D) or the
+// surfaces in space of a model without volumes (a surface mesh in space, on their CAD), writes
 // nodes and elements back into the same model (entities, physical groups and lower-dimensional
 // elements intact) and optionally adds per-element quality views. A free boundary (the default
 // method) moves on the model's CAD surfaces and curves where it has them
@@ -28,6 +29,7 @@ struct GmshOptimizeOptions {
   int dim = -1;                // 3: volumes, 2: planar surfaces, -1: highest dimension meshed
   bool generate = false;       // mesh the model first (gmsh generate(model dim)) if it has no mesh
   bool quality_views = false;  // add ElementData views (Q, radius ratio, min angle) on the result
+                               // (its triangles or tets; none for a mesh of quadrangles only)
   // The FE measures of the statistics (core/quality/fe_measures.h): gmsh_quality's, and
   // gmsh_optimize's before and after.
   FeOptions fe;
@@ -37,23 +39,25 @@ struct GmshOptimizeResult {
   OptimizeResult result;  // before/after statistics, iterations, converged, seconds
   std::string method;
   int dim = 0;
+  // dim 3 without tets: a surface mesh in space (its elements are triangles).
+  bool surface_mesh = false;
   std::vector<int> views;  // tags of the quality views added (empty unless asked for)
 
   // The paper's table: column "Init" (before) and the method's column (after, with the rows
   // iterations, converged and seconds).
   QualityTable table() const;
-  // {"method", "dim", "iterations", "converged", "seconds", "views", "before": {...},
-  //  "after": {...}} with before/after the columns of table().to_json(), and with a free
-  //  boundary "free_boundary": {"geometry" ("cad" or "discrete"), "moved", "hausdorff", ...}.
+  // {"method", "dim", "surface_mesh", "iterations", "converged", "seconds", "views",
+  //  "before": {...}, "after": {...}} with before/after the columns of table().to_json(), and with
+  //  a free boundary "free_boundary": {"geometry" ("cad" or "discrete"), "moved", "hausdorff",
+  //  ...}.
   std::string to_json() const;
 };
 
 GmshOptimizeResult gmsh_optimize(const GmshOptimizeOptions& options = {});
 
-// Throws InputError for a surface-only model (triangles on surfaces in space that bound no
-// volume: a TetMesh without tets): the CLI optimizes it; the in-process front ends do not write a
-// surface mesh back into the live model yet.
-void refuse_surface_only(const MeshData& data);
+// The tags of the elements the quality views are keyed on: the tets of a volume mesh, the
+// triangles of a 2D mesh and of a surface mesh in space (a TetMesh without tets).
+std::vector<std::size_t> element_tags_of(const MeshData& data);
 
 // The same in three steps, for a caller that must keep the Gmsh calls in one thread and run the
 // optimization in another (the GUI). gmsh_read_current meshes the model first if asked to,

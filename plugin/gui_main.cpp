@@ -220,7 +220,6 @@ class App {
     job_.options.generate = true;
     tree_.progress("cvtmesh: reading the mesh...");
     job_.data = gmsh_read_current(job_.options);  // meshes the model first if it has no mesh
-    refuse_surface_only(job_.data);
     gui_refresh();
     job_.cancel = false;
     job_.stopped = false;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "plugin/gmsh_inprocess.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/io/quality_view_geo.h"
 #include "core/quality/quality_fields.h"
 #include "core/quality/quality_histogram.h"
@@ -139,6 +140,8 @@ QualityHistogram histogram(const MeshData& d, const std::string& label) {
 
 // The options of the last run, kept in the tree (hidden) to tell when they change.
 const std::string kRunOptions = plugin::kGroup + "/9Results/run options";
+// 1 when the last compute found a surface mesh in space (the panel is then the 3D one).
+const std::string kSurfaceMesh = plugin::kGroup + "/9Results/surface mesh";
 
 int compute(plugin::RemoteOnelab& tree) {
   const std::string in = tree.string("Gmsh/MshFileName").value_or("");
@@ -148,7 +151,21 @@ int compute(plugin::RemoteOnelab& tree) {
   }
   tree.progress("cvtmesh: reading " + in);
   MeshData data = read_mesh(in);
-  if (data.dim != plugin::panel_dim(tree)) plugin::define_panel(tree, data.dim);
+  // A surface mesh in space is optimized as a 3D mesh though Gmsh says the model is 2D: the 3D
+  // panel, with the 3D default method (the one picked in the other dimension's list does not
+  // apply), and remembered (hidden) for the next calls of the client.
+  const bool surface_mesh = data.dim == 3 && is_surface_mesh(data.tet);
+  OnelabParam surface;
+  surface.name = kSurfaceMesh;
+  surface.number = surface_mesh ? 1 : 0;
+  surface.visible = false;
+  surface.never_changed = true;
+  tree.set(surface);
+  if (data.dim != plugin::panel_dim(tree)) {
+    plugin::PanelPreset preset;
+    if (!methods_for_dim(data.dim).empty()) preset.method = methods_for_dim(data.dim).front();
+    plugin::define_panel(tree, data.dim, preset);
+  }
   GmshOptimizeOptions o = plugin::read_panel(tree);
   const std::string signature = plugin::panel_signature(o);
   const int max_it = o.optimize.max_iterations;
@@ -160,6 +177,7 @@ int compute(plugin::RemoteOnelab& tree) {
   r.result = optimize(data, o.optimize);
   r.method = o.optimize.method;
   r.dim = data.dim;
+  r.surface_mesh = surface_mesh;
 
   const std::string out = output_path(in);
   WriteOptions w;
@@ -227,6 +245,7 @@ int main(int argc, char** argv) {
     // compute found; else 3D.
     int dim = static_cast<int>(tree->number("Gmsh/Model dimension").value_or(0));
     if (dim != 2 && dim != 3) dim = plugin::panel_dim(*tree);
+    if (dim == 2 && tree->number(kSurfaceMesh).value_or(0) == 1) dim = 3;
     plugin::define_panel(*tree, dim == 2 ? 2 : 3);
     if (action == "compute") return compute(*tree);
     if (action == "check") check(*tree);

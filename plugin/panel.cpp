@@ -227,9 +227,10 @@ std::string summary(const GmshOptimizeResult& r) {
   std::snprintf(buf, sizeof buf,
                 "cvtmesh: %s on %ld %s: %d iterations%s, %.2f s; Q avg %.4f -> %.4f, Q min %.4f "
                 "-> %.4f, bad (Q<0.3) %.2f%% -> %.2f%%",
-                r.method.c_str(), a.nb_elements, r.dim == 3 ? "tetrahedra" : "triangles",
-                r.result.iterations, r.result.converged ? " (converged)" : "", r.result.seconds,
-                b.q_avg, a.q_avg, b.q_min, a.q_min, b.bad_pct, a.bad_pct);
+                r.method.c_str(), a.nb_elements,
+                r.dim == 3 && !r.surface_mesh ? "tetrahedra" : "triangles", r.result.iterations,
+                r.result.converged ? " (converged)" : "", r.result.seconds, b.q_avg, a.q_avg,
+                b.q_min, a.q_min, b.bad_pct, a.bad_pct);
   return buf;
 }
 

@@ -92,10 +92,10 @@ std::string optimize_doc() {
   for (const OptionSpec& s : option_schema())
     if (s.fronts & kPython) d += "  " + s.name + ": " + describe(s) + "\n";
   d += "\nMethods:\n" + methods_help();
-  d +=
-      "\nReturns the paper's table as a dict: method, dim, iterations, converged, seconds, views,\n"
-      "before and after (number_of_elements, Q bins, q_min, average_quality, bad/good %,\n"
-      "dihedral/planar angles, average_radius_ratio).";
+  d += "\nReturns the paper's table as a dict: method, dim, surface_mesh, iterations, converged,\n"
+       "seconds, views, before and after (number_of_elements, Q bins, q_min, average_quality, "
+       "bad/good %,\n"
+       "dihedral/planar angles, average_radius_ratio).";
   return d;
 }
 

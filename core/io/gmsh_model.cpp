@@ -27,6 +27,7 @@
 #include "core/mesh/keep_free_curve_lines.h"
 #include "core/mesh/kept_quads.h"
 #include "core/mesh/build_adjacency.h"
+#include "core/mesh/check_surface_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/util/error.h"
 
@@ -213,8 +214,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
     }
     if (max_dim < 0) throw InputError(what + " has no mesh elements (empty mesh)");
     // Triangles on surfaces in space that bound no volume: a surface mesh in 3D, a TetMesh
-    // without tets (gmsh_surface_mesh3.h).
-    const bool surface3 = dim < 0 && max_dim == 2 && gmsh_surface_mesh_in_space();
+    // without tets (gmsh_surface_mesh3.h); read so also when 3D is asked for (the GUI's 3D
+    // panel on such a model).
+    const bool surface3 = (dim < 0 || dim == 3) && max_dim == 2 && gmsh_surface_mesh_in_space();
     if (dim < 0) dim = surface3 ? 3 : max_dim;
     if (dim != 2 && dim != 3)
       throw InputError(what +
@@ -861,7 +863,10 @@ GmshWritten fill_current_model(const MeshData& data, bool create_entities) {
       gmsh::model::mesh::addElementsByType(ent, written, b.first, b.second);
   };
   if (dim == 3) {
-    add_simplices(data.tet.tris, 3, data.tet.tri_surface, data.tet.tri_tags, 2, false, nullptr);
+    // A surface mesh in space (no tets): its triangles are its elements (their tags are the
+    // ones the quality views are keyed on).
+    add_simplices(data.tet.tris, 3, data.tet.tri_surface, data.tet.tri_tags, 2,
+                  is_surface_mesh(data.tet), nullptr);
     add_simplices(data.tet.tets, 4, data.tet.tet_region, data.tet.tet_tags, 4, true, nullptr);
   } else {
     add_simplices(data.tri.edges, 2, data.tri.edge_curve, data.tri.edge_tags, 1, false, nullptr);

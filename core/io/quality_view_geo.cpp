@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/io/camera_cut.h"
+#include "core/mesh/check_surface_mesh.h"
 
 namespace cvtmesh {
 
@@ -34,7 +35,8 @@ std::string quality_view_geo(const MeshData& data, const std::vector<ElementFiel
   s += v + buf;
   for (std::size_t k = 1; k < fields.size(); ++k)
     s += v + " + " + std::to_string(k) + "].Visible = 0;\n";
-  if (data.dim == 3 && data.tet.nb_vertices() > 0) {
+  // A surface mesh in space is seen whole (its triangles are its elements: no cut).
+  if (data.dim == 3 && data.tet.nb_vertices() > 0 && !is_surface_mesh(data.tet)) {
     std::array<double, 3> lo3, hi3;
     for (int k = 0; k < 3; ++k) lo3[k] = hi3[k] = data.tet.point(0)[k];
     for (int p = 0; p < data.tet.nb_vertices(); ++p)

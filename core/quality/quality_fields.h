@@ -1,5 +1,6 @@
 // The per-element quality fields written with --quality and shown as Gmsh views: Q, radius
-// ratio, min dihedral (3D) / min angle (2D), one value per live element in element order.
+// ratio, min dihedral (3D) / min angle (2D and a surface mesh in space, whose elements are its
+// triangles), one value per live element in element order.
 #pragma once
 #include <vector>
 

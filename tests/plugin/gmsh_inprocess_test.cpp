@@ -294,29 +294,72 @@ TEST_F(GmshInProcess, ModelWithoutMeshIsAnErrorUnlessGenerateIsAsked) {
   EXPECT_FALSE(nodes(3).empty());
 }
 
-// A surface-only model (an open sphere octant: triangles that bound no volume) is refused with a
-// message that points to the CLI, and the model is left as it was.
-TEST_F(GmshInProcess, SurfaceOnlyModelIsRefusedWithAPointerToTheCli) {
+// A surface-only model (an open sphere octant: triangles that bound no volume) is optimized in
+// place like a volume mesh: its triangles on the CAD sphere, its lines and points kept, the quality
+// Gmsh holds afterwards the result's and not worse, the views on the triangles.
+TEST_F(GmshInProcess, SurfaceOnlyModelIsOptimizedInPlace) {
   const std::string geo = testing::temp_dir() + "/octant.geo";
   std::FILE* f = std::fopen(geo.c_str(), "w");
   ASSERT_NE(f, nullptr);
   std::fputs(
       "Point(1) = {0, 0, 0, 0.2};\nPoint(2) = {1, 0, 0, 0.2};\nPoint(3) = {0, 1, 0, 0.2};\n"
-      "Point(4) = {0, 0, 1, 0.2};\nCircle(1) = {2, 1, 3};\nCircle(2) = {3, 1, 4};\n"
-      "Circle(3) = {4, 1, 2};\nCurve Loop(1) = {1, 2, 3};\nSurface(1) = {1};\n",
+      "Point(4) = {0, 0, 1, 0.05};\nCircle(1) = {2, 1, 3};\nCircle(2) = {3, 1, 4};\n"
+      "Circle(3) = {4, 1, 2};\nCurve Loop(1) = {1, 2, 3};\nSurface(1) = {1};\n"
+      "Physical Surface(\"octant\", 5) = {1};\n",
       f);
   std::fclose(f);
   gmsh::open(geo);
   gmsh::model::mesh::generate(2);
-  const auto before = nodes(2);
+  const auto corners = nodes(0);  // the arcs' ends and the sphere's centre (Point 1)
+  const auto curves = nodes(1);
+  const auto surface = nodes(2);
+  const auto groups = physical_groups();
   GmshOptimizeOptions o;
-  try {
-    gmsh_optimize(o);
-    FAIL() << "expected InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("use the CLI"), std::string::npos) << e.what();
+  o.quality_views = true;
+  const GmshQualityResult before = gmsh_quality(o);
+  const GmshOptimizeResult r = gmsh_optimize(o);
+  EXPECT_EQ(r.dim, 3);
+  EXPECT_EQ(physical_groups(), groups);
+  EXPECT_EQ(nodes(0), corners);  // the corners fixed
+  // Every node of the surface and its arcs on the CAD sphere, the arcs' in their planes; the
+  // curve nodes keep their tags (they slide along their arcs).
+  const auto after_curves = nodes(1);
+  ASSERT_EQ(after_curves.size(), curves.size());
+  int moved = 0;
+  for (const auto& [tag, p] : after_curves) {
+    EXPECT_EQ(curves.count(tag), 1u) << tag;
+    if (corners.count(tag)) continue;
+    EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, 1e-9) << tag;
+    EXPECT_NEAR(std::min({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}), 0.0, 1e-12) << tag;
   }
-  EXPECT_EQ(nodes(2), before);
+  for (const auto& [tag, p] : nodes(2)) {
+    if (after_curves.count(tag)) continue;
+    EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, 1e-9) << tag;
+    const auto it = surface.find(tag);
+    moved += it != surface.end() && it->second != p;
+  }
+  EXPECT_GT(moved, 0);
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2, 1);
+  EXPECT_EQ(types, std::vector<int>{2});  // triangles only
+  std::vector<std::size_t> tri_tags, tri_nodes;
+  gmsh::model::mesh::getElementsByType(2, tri_tags, tri_nodes, 1);
+  o.quality_views = false;
+  const GmshQualityResult after = gmsh_quality(o);
+  EXPECT_EQ(after.stats.nb_elements, static_cast<long>(tri_tags.size()));
+  EXPECT_EQ(after.stats.nb_elements, r.result.after.nb_elements);
+  EXPECT_NEAR(after.stats.q_min, r.result.after.q_min, 1e-12);
+  EXPECT_GE(after.stats.q_min, before.stats.q_min - 1e-12);
+  ASSERT_EQ(r.views.size(), 3u);
+  std::string type;
+  std::vector<std::size_t> view_tags;
+  std::vector<std::vector<double>> data;
+  double time = 0;
+  int nc = 0;
+  gmsh::view::getModelData(r.views.front(), 0, type, view_tags, data, time, nc);
+  std::sort(view_tags.begin(), view_tags.end());
+  std::sort(tri_tags.begin(), tri_tags.end());
+  EXPECT_EQ(view_tags, tri_tags);
 }
 
 // A .msh saved with physical groups holds only their elements: reopened in a script, the two-region

@@ -12,6 +12,8 @@
   a notice (Info), not an error.
 - An input changed after a run (a click on a check box) renames the run's views "... (stale)".
 - A model that cannot be read: the error reaches the console and the result file, no crash.
+- A surface mesh in space (surfaces bounding no volume): the 3D panel, a click on Run optimizes
+  it, the views are the triangles' and seen whole.
 
 Environment: CVTMESH_GUI (the executable), CVTMESH_SOURCE_DIR, CVTMESH_ARTIFACTS (screenshots).
 """
@@ -178,6 +180,44 @@ class Gui(unittest.TestCase):
         self.assertEqual(fb["geometry"], "cad")
         self.assertGreater(fb["moved"], 0)
         self.assertLessEqual(fb["hausdorff"], fb["hausdorff_bound"])
+
+    def test_a_surface_mesh_in_space_is_optimized_and_its_triangles_shown(self):
+        # An open spherical patch and a flat plate: triangles on surfaces that bound no volume.
+        octant = os.path.join(self.tmp.name, "octant.geo")
+        with open(octant, "w") as f:
+            f.write("Point(1) = {0, 0, 0, 0.4};\nPoint(2) = {1, 0, 0, 0.4};\n"
+                    "Point(3) = {0, 1, 0, 0.4};\nPoint(4) = {0, 0, 1, 0.1};\n"
+                    "Circle(1) = {2, 1, 3};\nCircle(2) = {3, 1, 4};\nCircle(3) = {4, 1, 2};\n"
+                    "Curve Loop(1) = {1, 2, 3};\nSurface(1) = {1};\n"
+                    "Line(4) = {1, 2};\nLine(5) = {3, 1};\nCurve Loop(2) = {4, 1, 5};\n"
+                    "Plane Surface(2) = {2};\n")
+        self.start("--show-quality", "--exit-after-run", "0", model=octant)
+        wid = xu.window("Gmsh")
+        q = self.result_of("quality")
+        self.assertIn("result", q, q)
+        # A synthetic click on the Run button, as a user would.
+        _, height = xu.window_size(wid)
+        xu.click(wid, MENU_WIDTH - 80, height - 39)
+        run = self.result_of("optimize")
+        status, out = self.finish()
+        self.assertEqual(status, 0, out)
+        self.assertNotIn("error", run, run)
+        r = run["result"]
+        self.assertEqual(r["dim"], 3)  # the 3D panel: a surface mesh in space
+        self.assertTrue(r["surface_mesh"])
+        self.assertIn(f"on {r['after']['number_of_elements']} triangles", out)  # the summary
+        self.assertEqual(r["before"]["number_of_elements"], q["result"]["number_of_elements"])
+        self.assertGreaterEqual(r["after"]["q_min"], r["before"]["q_min"])
+        # The views are the triangles': their names, Q over its range, the histogram beside it,
+        # the surface seen whole (no cut).
+        views = {v["tag"]: v for v in run["display"]["views"]}
+        self.assertEqual([views[t]["name"] for t in r["views"]],
+                         ["Q (Du-Wang)", "Radius ratio 2r/R", "Min angle"])
+        qv = views[r["views"][0]]
+        self.assertEqual(qv["visible"], 1)
+        self.assertEqual(qv["clip"], 0)
+        self.assertAlmostEqual(qv["custom_min"], r["after"]["q_min"], places=9)
+        self.assertEqual(views[run["result"]["histogram_view"]]["type"], 2)
 
     def test_stop_button_ends_a_long_run(self):
         # Tolerance 0 never converges: 1000 iterations would take minutes.

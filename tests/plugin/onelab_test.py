@@ -122,6 +122,35 @@ class Onelab(unittest.TestCase):
         for name in ("Q (Du-Wang)", "fluid", "ball_surface", "cube_faces"):
             self.assertIn(f'"{name}"', text)
 
+    def test_batch_run_on_a_surface_mesh_in_space(self):
+        # An open spherical patch and a plate (surfaces that bound no volume): Gmsh says the
+        # model is 2D, the client finds a surface mesh in space and runs the 3D default method.
+        model = os.path.join(self.dir, "model.geo")
+        with open(model, "w") as f:
+            f.write("Point(1) = {0, 0, 0, 0.4};\nPoint(2) = {1, 0, 0, 0.4};\n"
+                    "Point(3) = {0, 1, 0, 0.4};\nPoint(4) = {0, 0, 1, 0.1};\n"
+                    "Circle(1) = {2, 1, 3};\nCircle(2) = {3, 1, 4};\nCircle(3) = {4, 1, 2};\n"
+                    "Curve Loop(1) = {1, 2, 3};\nSurface(1) = {1};\n"
+                    "Line(4) = {1, 2};\nLine(5) = {3, 1};\nCurve Loop(2) = {4, 1, 5};\n"
+                    "Plane Surface(2) = {2};\n")
+        os.symlink(CLIENT, os.path.join(self.dir, "cvtmesh.exe"))
+        run = subprocess.run(["gmsh", model, "cvtmesh.exe", "-run",
+                              "-setnumber", "General.Terminal", "1"], cwd=self.dir, env=self.env,
+                             capture_output=True, text=True, timeout=300)
+        log = run.stdout + run.stderr
+        self.assertEqual(run.returncode, 0, log)
+        self.assertNotIn("Error", log)
+        msh_in = os.path.join(self.dir, "model.msh")
+        msh_out = os.path.join(self.dir, "model_cvt.msh")
+        self.assertIn(f"Reading '{msh_out}'", log)
+        before, after = stats(msh_in), stats(msh_out)
+        self.assertGreater(after["number_of_elements"], 0)
+        self.assertGreaterEqual(after["q_min"], before["q_min"])
+        # The 3D default moves the vertices on the surfaces (2D's default, picked from the list
+        # Gmsh's 2D model shows first, would only flip coplanar edges here).
+        self.assertGreater(after["average_quality"], before["average_quality"])
+        self.assertIn(f" on {after['number_of_elements']} triangles", log)
+
     def test_gui_registered_solver(self):
         art = xu.artifacts_dir()
         model = write_model(self.dir, 8)

@@ -10,6 +10,9 @@ if(TARGET cvtmesh_python)
   add_test(NAME plugin.scripting COMMAND ${Python3_EXECUTABLE} ${_dir}/scripting_test.py)
   set_tests_properties(plugin.scripting PROPERTIES TIMEOUT 600 ENVIRONMENT
     "PYTHONPATH=${CVTMESH_PYTHON_DIR};CVTMESH_SOURCE_DIR=${CMAKE_SOURCE_DIR};CVTMESH_CLI=$<TARGET_FILE:cvtmesh>;CVTMESH_CPP_EXAMPLE=$<TARGET_FILE:cvtmesh_example_optimize>")
+  add_test(NAME plugin.inprocess_inputs COMMAND ${Python3_EXECUTABLE} ${_dir}/inprocess_inputs_test.py)
+  set_tests_properties(plugin.inprocess_inputs PROPERTIES TIMEOUT 600 ENVIRONMENT
+    "PYTHONPATH=${CVTMESH_PYTHON_DIR}")
 endif()
 
 if(CVTMESH_XVFB_RUN)
