@@ -28,9 +28,13 @@ void register_check(CLI::App& app) {
          // but the file is not valid as it is.
          if (d.model().nb_reoriented > 0) {
            r.ok = false;
-           r.problems.push_back(std::to_string(d.model().nb_reoriented) +
-                                " tetrahedra have negative volume (the other vertex order; "
-                                "optimize and convert write them positive)");
+           r.problems.push_back(
+               std::to_string(d.model().nb_reoriented) +
+               (d.dim == 3 ? " tetrahedra have negative volume (the other vertex order; "
+                             "optimize and convert write them positive)"
+                           : " triangles turn the other way round than their surface's majority "
+                             "(mixed orientation; optimize and convert write them as the "
+                             "surface's)"));
          }
          const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
          // Structure: a self-intersecting boundary is invalid; coincident
