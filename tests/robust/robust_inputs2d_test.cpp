@@ -156,5 +156,63 @@ TEST(RobustInputs2d, TangledTrianglesAreRefusedOnceTurned) {
   }
 }
 
+// Gmsh's demo boolean/fragment_numbering (a strip of rectangles and ten small disks fragmented
+// together): 'cvdt' cannot lower the maximum angle of the input's worst triangle (a disk's sliver
+// against the strip) and the restore cannot mend it. The input is not returned unchanged: the
+// never-worse local operations improve it, and no row is worse.
+const char* kFragmentNumbering =
+    "SetFactory(\"OpenCASCADE\");\nw = 0.05; N = 10; R = 0.002; spacing = 0;\n"
+    "Rectangle(1) = {-3*w, w, 0, 6*w, w, 0};\nRectangle(2) = {-3*w, 0., 0, w, w, 0};\n"
+    "Translate {2*w, 0, 0} { Duplicata { Surface{2}; } }\n"
+    "Translate {w, 0, 0} { Duplicata { Surface{3}; } }\n"
+    "Translate {2*w, 0, 0} { Duplicata { Surface{4}; } }\n"
+    "Rectangle(6) = {-6*w, 0, 0, 12*w, 5*w, 0};\nb() = Boundary{ Surface{6}; };\nt = b(2);\n"
+    "b() = {};\nFor i In {1:N}\n  s = news; b() += s; "
+    "Disk(s) = {-w-R-spacing, (2*R+spacing)*i, 0, R};\nEndFor\n"
+    "c() = BooleanFragments{ Curve{t}; Surface{1:6,b()}; Delete; }{};\n";
+
+TEST(RobustInputs2d, AMethodEndingWorseFallsBackOnLocalOperationsNotTheInput) {
+  MeshData d = read_mesh(write_text("fragment_numbering.geo", kFragmentNumbering), {.dim = 2});
+  ASSERT_EQ(d.dim, 2);
+  const TriMesh2 input = d.tri;
+  OptimizeOptions o;
+  o.method = "cvdt";  // named: no final pass, only the fallback
+  const OptimizeResult r = optimize(d, o);
+  ASSERT_TRUE(has_note(r, "made the mesh worse")) << (r.notes.empty() ? "" : r.notes[0]);
+  EXPECT_TRUE(has_note(r, "improved by local operations")) << r.notes[0];
+  EXPECT_FALSE(r.kept_input);
+  EXPECT_NE(d.tri.xy, input.xy);
+  const MeshCheck c = check_mesh(d.tri);
+  ASSERT_TRUE(c.ok) << c.problems.front();
+  const QualityStats after = quality_stats(d.tri, "");
+  EXPECT_EQ(worse_than(after, r.before), "");
+  EXPECT_GT(after.q_avg, r.before.q_avg);
+  for (int v = 0; v < d.tri.nb_vertices(); ++v)  // corners and curve nodes stay
+    if (input.vclass[v].dim < 2) {
+      EXPECT_EQ(d.tri.xy[2 * v], input.xy[2 * v]);
+      EXPECT_EQ(d.tri.xy[2 * v + 1], input.xy[2 * v + 1]);
+    }
+}
+
+// The default run ends with the local pass; the paper's method named explicitly does not (its
+// result is the paper's).
+TEST(RobustInputs2d, OnlyTheDefaultRunEndsWithTheLocalPass) {
+  const std::string geo = testing::geo_path("washer.geo");
+  MeshData named = read_mesh(geo, {.dim = 2});
+  MeshData plain = named;
+  OptimizeOptions o;
+  o.method = "cvdt";
+  o.max_iterations = 50;
+  const OptimizeResult rn = optimize(named, o);
+  EXPECT_FALSE(has_note(rn, "improved by local operations"));
+  OptimizeOptions def;
+  def.max_iterations = 50;
+  const OptimizeResult rd = optimize(plain, def);
+  EXPECT_TRUE(has_note(rd, "improved by local operations"));
+  EXPECT_EQ(worse_than(rd.after, rn.after), "");
+  EXPECT_GT(rd.after.q_avg, rn.after.q_avg);
+  EXPECT_TRUE(check_mesh(plain.tri).ok);
+}
+
 }  // namespace
 }  // namespace cvtmesh
