@@ -40,12 +40,33 @@ class VertexMover {
 
   int nb_free() const { return static_cast<int>(free_.size()); }
 
-  // One sweep over the free vertices; returns the number of accepted moves.
+  // One sweep over the free vertices that are active (all at first; then those whose star
+  // changed since they were last tried: a neighbour moved, or a flip touched it); returns the
+  // number of accepted moves.
   long sweep() {
     build_stars();
+    if (active_.empty()) active_.assign(m_.nb_vertices(), 1);
+    std::vector<char> next(m_.nb_vertices(), 0);
     long moves = 0;
-    for (int v : free_) moves += move(v) ? 1 : 0;
+    for (int v : free_) {
+      if (!active_[v]) continue;
+      if (!move(v)) continue;
+      ++moves;
+      for (int k = start_[v]; k < start_[v + 1]; ++k)
+        for (int j = 0; j < 3; ++j) next[m_.tris[3 * around_[k] + j]] = 1;
+    }
+    // A vertex moved after a neighbour of it was tried this sweep is tried again next sweep.
+    active_.swap(next);
     return moves;
+  }
+
+  // The vertices of triangles a flip pass changed are tried again.
+  void activate(const std::vector<int>& tris_before) {
+    if (active_.empty()) return;  // every vertex is active on the first sweep
+    for (std::size_t t = 0; 3 * t < m_.tris.size(); ++t)
+      if (!std::equal(&m_.tris[3 * t], &m_.tris[3 * t] + 3, &tris_before[3 * t]))
+        for (int j = 0; j < 3; ++j)
+          active_[m_.tris[3 * t + j]] = active_[tris_before[3 * t + j]] = 1;
   }
 
  private:
@@ -137,7 +158,7 @@ class VertexMover {
     double step = 0.1 * shortest;
     for (int h = 0; h <= 6; ++h, step *= 0.5) {
       bool improved = true;
-      while (improved) {
+      for (int it = 0; improved && it < 4; ++it) {  // at most 4 steps of one length
         improved = false;
         const double cx = best[0], cy = best[1];
         for (int d = 0; d < 8; ++d) {
@@ -157,6 +178,7 @@ class VertexMover {
 
   TriMesh2& m_;
   std::vector<int> free_, start_, around_;
+  std::vector<char> active_;
 };
 
 }  // namespace
@@ -167,7 +189,9 @@ ImproveLocal2dStats improve_local2d(TriMesh2& mesh, const std::vector<char>& fix
   VertexMover mover(mesh, fixed);
   st.nb_free = mover.nb_free();
   for (int r = 0; r < options.max_rounds; ++r) {
+    const std::vector<int> tris_before = mesh.tris;
     const long flips = flip2d_pass(mesh, {.criterion = FlipCriterion2d::kNoWorse});
+    if (flips) mover.activate(tris_before);
     const long moves = mover.sweep();
     st.nb_flips += flips;
     st.nb_moves += moves;

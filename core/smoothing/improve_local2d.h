@@ -6,13 +6,15 @@
 // (mesh.edges) and no open edge (a closed star), not marked in `fixed`.
 // propose: the mean of its edge neighbours (Laplacian), the area-weighted mean of its triangles'
 // centroids, each also a half and a quarter of the way; then a compass search from the best
-// (8 directions from a tenth of the star's shortest edge, halved 6 times).
+// (8 directions from a tenth of the star's shortest edge, halved 6 times, at most 4 steps of
+// each length).
 // check: every triangle of the star positive (exact orient2d).
 // accept: over the star, the minimum Q and the minimum angle do not fall, the maximum angle
 // does not rise, and the sum of Q rises (by more than 1e-12 relative).
 // apply: the coordinates; connectivity never changes.
 // So the mesh's minimum and average Q, minimum and maximum angle are never worse, and the
-// average Q rises with every accepted operation. Serial, in vertex order: deterministic.
+// average Q rises with every accepted operation. Serial, in vertex order: deterministic. After
+// the first sweep, only the vertices whose star changed (a neighbour moved, a flip) are tried.
 #pragma once
 #include <vector>
 
