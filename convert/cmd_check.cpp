@@ -5,12 +5,20 @@
 #include "convert/cli_common.h"
 #include "core/io/place_mid_edge_nodes.h"
 #include "core/mesh/check_mesh.h"
+#include "core/mesh/find_coincident_vertices.h"
 #include "core/mesh/check_quads2d.h"
 #include "core/mesh/check_surface_mesh.h"
 #include "core/pipeline/find_structural_defects.h"
 #include "core/pipeline/volumes_apart.h"
 
 namespace cvtmesh::cli {
+
+// A vertex's node tag in the file (its 0-based id + 1 when the file gave none).
+static std::size_t node_label(const TriMesh2& m, int v) {
+  return v < static_cast<int>(m.node_tags.size()) && m.node_tags[v]
+             ? m.node_tags[v]
+             : static_cast<std::size_t>(v) + 1;
+}
 
 void register_check(CLI::App& app) {
   auto in = std::make_shared<InputOpts>();
@@ -28,9 +36,13 @@ void register_check(CLI::App& app) {
          // but the file is not valid as it is.
          if (d.model().nb_reoriented > 0) {
            r.ok = false;
-           r.problems.push_back(std::to_string(d.model().nb_reoriented) +
-                                " tetrahedra have negative volume (the other vertex order; "
-                                "optimize and convert write them positive)");
+           r.problems.push_back(
+               std::to_string(d.model().nb_reoriented) +
+               (d.dim == 3 ? " tetrahedra have negative volume (the other vertex order; "
+                             "optimize and convert write them positive)"
+                           : " triangles turn the other way round than their surface's majority "
+                             "(mixed orientation; optimize and convert write them as the "
+                             "surface's)"));
          }
          const long n = d.dim == 3 ? d.tet.nb_tets() : d.tri.nb_tris();
          // Structure: a self-intersecting boundary is invalid; coincident
@@ -92,6 +104,20 @@ void register_check(CLI::App& app) {
          // A 2D hybrid mesh's quadrangles: each strictly convex in its surface's turning sense.
          QuadCheck quads;
          if (d.dim == 2) {
+           // Coincident nodes (a crack's two lips, parts in contact): a warning.
+           std::vector<double> xyz(3 * static_cast<std::size_t>(d.tri.nb_vertices()), 0.0);
+           std::vector<char> used(d.tri.nb_vertices(), 0);
+           for (int v = 0; v < d.tri.nb_vertices(); ++v) {
+             xyz[3 * v] = d.tri.xy[2 * v];
+             xyz[3 * v + 1] = d.tri.xy[2 * v + 1];
+           }
+           for (int v : d.tri.tris) used[v] = 1;
+           const auto pairs = find_coincident_vertices(xyz, used, 1e-10);
+           if (!pairs.empty())
+             info() << in->path << ": warning: " << pairs.size()
+                    << " pairs of nodes at the same place (a crack's lips, parts in contact; "
+                    << "first: nodes " << node_label(d.tri, pairs[0][0]) << " and "
+                    << node_label(d.tri, pairs[0][1]) << ")\n";
            quads = check_quads2d(d.tri);
            r.ok &= quads.ok();
            if (quads.nb_inverted)

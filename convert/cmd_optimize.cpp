@@ -191,7 +191,16 @@ void register_optimize(CLI::App& app) {
            input_mesh = d;
            d.model().views.clear();
          }
-         OptimizeResult r = optimize(d, *opt);
+         // A refusal from inside the optimizer names the file it was about.
+         OptimizeResult r = [&] {
+           try {
+             return optimize(d, *opt);
+           } catch (const InputError& e) {
+             const std::string what = e.what();
+             if (what.rfind("'" + in->path + "'", 0) == 0) throw;
+             throw InputError("'" + in->path + "': " + what);
+           }
+         }();
          if (input_mesh.dim && !input_mesh.model().views.empty()) {
            d.model().views = transfer_views(input_mesh, d);
            input_mesh = MeshData{};

@@ -170,8 +170,12 @@ class Builder {
     const Locate2dResult loc = locate2d(m_, p, hint);
     if (loc.tri < 0) throw InvariantError("cdt2d: point location failed");
     if (loc.on_vertex >= 0)
-      throw InputError("cdt2d: points " + std::to_string(loc.on_vertex) + " and " +
-                       std::to_string(v) + " coincide");
+      throw InputError(
+          "the 2D Delaunay triangulation cannot take two vertices at the same "
+          "place (vertices " +
+          std::to_string(loc.on_vertex) + " and " + std::to_string(v) + ", 0-based, at (" +
+          std::to_string(p[0]) + ", " + std::to_string(p[1]) +
+          "); e.g. a crack's duplicated nodes)");
     const int t = loc.tri;
     std::vector<int> ring, outer, ids;
     if (loc.on_edge < 0) {

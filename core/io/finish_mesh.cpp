@@ -378,16 +378,24 @@ void finish2(TriMesh2& m, ModelInfo& info, const std::string& what) {
     if (o == 0) throw InputError(what + ": triangle " + s(t + 1) + " is flat (zero area)");
     (o > 0 ? sign[m.tri_region[t]].first : sign[m.tri_region[t]].second)++;
   }
+  // A region's turning sense is its triangles' majority (a tie: counter-clockwise); triangles in
+  // the other sense are turned to it (the overlap test below says whether they form a mesh).
   m.cw_surfaces.clear();
+  long nb_turned = 0;
   for (const auto& [r, c] : sign) {
-    if (c.first && c.second)
-      throw InputError(what + ": " + s(std::min(c.first, c.second)) + " triangles of region " +
-                       s(r) + " are inverted (mixed orientation)");
-    if (c.second) m.cw_surfaces.push_back(r);
+    if (c.second > c.first) m.cw_surfaces.push_back(r);
+    nb_turned += std::min(c.first, c.second);
   }
-  for (int t = 0; t < nt; ++t)
-    if (std::binary_search(m.cw_surfaces.begin(), m.cw_surfaces.end(), m.tri_region[t]))
+  for (int t = 0; t < nt; ++t) {
+    const int* v = &m.tris[3 * t];
+    if (orient2d(m.point(v[0]), m.point(v[1]), m.point(v[2])) < 0)
       std::swap(m.tris[3 * t + 1], m.tris[3 * t + 2]);
+  }
+  m.model.nb_reoriented = nb_turned;
+  if (nb_turned)
+    m.model.read_notes.push_back(what + ": " + s(nb_turned) + " of " + s(nt) +
+                                 " triangles turned the other way round than their region's "
+                                 "majority: turned to it");
 
   const std::vector<int> map = used_vertices(m.tris, m.nb_vertices());
   for (int& v : m.tris) v = map[v];
@@ -416,7 +424,12 @@ void finish2(TriMesh2& m, ModelInfo& info, const std::string& what) {
       if (o < 0 || o < 3 * t) continue;
       if (orient2d(m.point(a), m.point(b), m.point(m.tris[o])) >= 0)
         throw InputError(what + ": triangles " + s(t + 1) + " and " + s(o / 3 + 1) +
-                         " overlap (duplicated or folded elements)");
+                         " overlap (duplicated or folded elements" +
+                         (nb_turned ? "; " + s(nb_turned) +
+                                          " triangles were turned to their region's majority "
+                                          "sense and do not form a mesh"
+                                    : std::string()) +
+                         ")");
     }
   }
   FreshTags fresh(m.edge_curve);

@@ -595,16 +595,24 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           throw InputError(what + ": triangle " + std::to_string(m.tri_tags[t]) +
                            " is flat (zero area)");
       }
+      // A surface's turning sense is its triangles' majority (a tie: counter-clockwise);
+      // triangles in the other sense (Gmsh's own triangulate returns either) are turned to it,
+      // as tets given with negative volume are: check_mesh then says whether they form a mesh.
+      long nb_turned = 0;
       for (const auto& [s, c] : sign) {
-        if (c.first && c.second)
-          throw InputError(what + ": surface " + std::to_string(s) + " has " +
-                           std::to_string(std::min(c.first, c.second)) +
-                           " inverted triangles (mixed orientation)");
-        if (c.second) m.cw_surfaces.push_back(s);
+        if (c.second > c.first) m.cw_surfaces.push_back(s);
+        nb_turned += std::min(c.first, c.second);
       }
-      for (int t = 0; t < m.nb_tris(); ++t)
-        if (std::binary_search(m.cw_surfaces.begin(), m.cw_surfaces.end(), m.tri_region[t]))
+      for (int t = 0; t < m.nb_tris(); ++t) {
+        const int* v = &m.tris[3 * t];
+        if (orient2d(m.point(v[0]), m.point(v[1]), m.point(v[2])) < 0)
           std::swap(m.tris[3 * t + 1], m.tris[3 * t + 2]);
+      }
+      m.model.nb_reoriented = nb_turned;
+      if (nb_turned)
+        m.model.read_notes.push_back(
+            what + ": " + std::to_string(nb_turned) + " of " + std::to_string(m.nb_tris()) +
+            " triangles turned the other way round than their surface's majority: turned to it");
       // 2D hybrid meshes and free curves: lines on no triangle kept verbatim, quadrangles'
       // surfaces oriented, their edges towards triangles constrained.
       keep_free_curve_lines(m);
@@ -612,7 +620,14 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
       build_adjacency2(m);
       constrain_kept_quad_edges(m);
       const MeshCheck c = check_mesh(m);
-      if (!c.ok) throw InputError(what + ": invalid triangle mesh: " + check_summary(c));
+      if (!c.ok)
+        throw InputError(what + ": invalid triangle mesh: " +
+                         (nb_turned ? std::to_string(nb_turned) +
+                                          " triangles were turned the other way round than their "
+                                          "surface's majority and, turned to it, overlap their "
+                                          "neighbours (do not form a mesh): "
+                                    : std::string()) +
+                         check_summary(c));
     }
   });
   return out;

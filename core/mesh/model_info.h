@@ -91,7 +91,8 @@ struct ModelInfo {
   // What the reader did beyond reading (e.g. meshed the volumes of a surface-only file): one line
   // each, for the front ends to print as notes.
   std::vector<std::string> read_notes;
-  // Tets the reader turned positive (the file gave them with negative volume: reorient_tets.h).
+  // Tets the reader turned positive (the file gave them with negative volume: reorient_tets.h);
+  // in 2D, triangles turned to their surface's majority turning sense (gmsh_model.cpp).
   long nb_reoriented = 0;
   // The file's post-processing views ($NodeData / $ElementData), each for the mesh it was read or
   // carried onto (DataView::fingerprint).

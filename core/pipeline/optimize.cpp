@@ -44,6 +44,8 @@
 #include "core/mesh/check_quads2d.h"
 #include "core/mesh/kept_quads.h"
 #include "core/smoothing/smooth_quads2d.h"
+#include "core/smoothing/improve_local2d.h"
+#include "core/mesh/find_coincident_vertices.h"
 #include "core/pipeline/select_regions.h"
 #include "core/pipeline/volumes_apart.h"
 #include "core/pipeline/find_structural_defects.h"
@@ -1004,15 +1006,104 @@ std::string restore_failed(const RestoreNote& rn) {
          std::to_string(rn.stats.nb_short_after);
 }
 
+// #V flags of the vertices of mesh's triangles that coincide with another one (exact
+// duplicates or within 1e-10 of the bounding box's diagonal); empty if there is none.
+std::vector<char> coincident_vertices_2d(const TriMesh2& mesh) {
+  const int nv = mesh.nb_vertices();
+  std::vector<char> used(nv, 0);
+  for (int t = 0; t < mesh.nb_tris(); ++t)
+    if (mesh.tris[3 * t] >= 0)
+      for (int k = 0; k < 3; ++k) used[mesh.tris[3 * t + k]] = 1;
+  std::vector<double> xyz(3 * static_cast<std::size_t>(nv), 0.0);
+  for (int v = 0; v < nv; ++v) {
+    xyz[3 * v] = mesh.xy[2 * v];
+    xyz[3 * v + 1] = mesh.xy[2 * v + 1];
+  }
+  const auto pairs = find_coincident_vertices(xyz, used, 1e-10, 1 << 30);
+  if (pairs.empty()) return {};
+  std::vector<char> flag(nv, 0);
+  for (const auto& p : pairs) flag[p[0]] = flag[p[1]] = 1;
+  return flag;
+}
+
+// 2D, local operations only (improve_local2d: flips and vertex moves that no quality row can see
+// as a loss, never across a constrained edge) on mesh: true, with r's rows and a note (`why`
+// followed by what they did), when they changed it and the result is neither worse than the
+// input (r.before) nor than mesh was (r.after; checked, with verify_optimized against `input`);
+// false, with mesh as it was, otherwise.
+bool improve_locally_2d(TriMesh2& mesh, const TriMesh2& input, const OptimizeOptions& options,
+                        const std::string& label, const std::string& why, OptimizeResult& r,
+                        const std::vector<char>& fixed = {}) {
+  report_start(options, "local");
+  const TriMesh2 start = mesh;
+  const auto t0 = std::chrono::steady_clock::now();
+  const ImproveLocal2dStats ls = improve_local2d(mesh, fixed);
+  r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (ls.nb_flips + ls.nb_moves == 0) return false;
+  if (options.verify) verify_optimized(input, mesh);
+  QualityStats after = quality_stats(mesh, label);
+  // Cannot happen (every operation is guarded), but a result is never worse.
+  if (!worse_than(after, r.before).empty() || !worse_than(after, r.after).empty()) {
+    mesh = start;
+    return false;
+  }
+  r.after = after;
+  r.kept_input = false;
+  r.notes.push_back(why + ", improved by local operations that cannot make it worse: " +
+                    std::to_string(ls.nb_flips) + " edge flips and " + std::to_string(ls.nb_moves) +
+                    " vertex moves in " + std::to_string(ls.rounds) +
+                    " rounds (no quality row worse)");
+  return true;
+}
+
+// The default 2D run (no method named, or the 3D default's name) ends with the local pass; the
+// paper's methods named explicitly (--method cvdt, ...) stay as the paper defines them.
+void end_default_run_2d(TriMesh2& mesh, const TriMesh2& input, const OptimizeOptions& options,
+                        OptimizeResult& r) {
+  if (!options.method.empty() && options.method != default_method(3)) return;
+  if (!options.never_worse) return;
+  improve_locally_2d(mesh, input, options, r.after.label, "the result of '" + r.method + "'", r);
+}
+
 // 2D: optimize_2d; where the result is worse than the input, the vertices around the elements
 // short of the input's worst go back to their input positions (restore_worse_regions), and the
 // input is kept if that is not enough.
 OptimizeResult optimize_2d_triangles(TriMesh2& mesh, const OptimizeOptions& options) {
   const TriMesh2 input = mesh;
+  // Coincident vertices (a crack's two lips from Gmsh's Crack plugin, parts in contact): the
+  // Delaunay rebuild of the method cannot take them, so the triangles are improved by local
+  // operations only, the coincident vertices pinned and the lips' edges (constrained) never
+  // flipped: each pair stays a pair at the same place.
+  const std::vector<char> coincident = coincident_vertices_2d(mesh);
+  if (!coincident.empty()) {
+    long nb = 0;
+    for (char c : coincident) nb += c;
+    const OptimizeOptions o = resolve(options, 2);
+    OptimizeResult r;
+    r.method = o.method;
+    r.before = quality_stats(mesh, "before");
+    r.after = r.before;
+    r.after.label = o.method;
+    r.converged = true;
+    const std::string why = std::to_string(nb) +
+                            " vertices coincide with another one (a crack's lips, parts in "
+                            "contact): '" +
+                            o.method +
+                            "' (a Delaunay rebuild) cannot take them; they are kept in place";
+    if (!improve_locally_2d(mesh, input, o, o.method, why + " and the mesh", r, coincident)) {
+      r.notes.push_back(why +
+                        "; no local operation improves the mesh: the input is kept unchanged");
+      r.kept_input = true;
+    }
+    return r;
+  }
   OptimizeResult r = optimize_2d(mesh, options);
   if (!options.never_worse) return r;
   const std::string worse = worse_than(r.after, r.before);
-  if (worse.empty()) return r;
+  if (worse.empty()) {
+    end_default_run_2d(mesh, input, options, r);
+    return r;
+  }
   const std::string label = r.after.label;
   const RestoreNote rn{worse, restore_worse_regions(mesh, input, r.before)};
   if (options.verify) verify_optimized(input, mesh);
@@ -1020,14 +1111,17 @@ OptimizeResult optimize_2d_triangles(TriMesh2& mesh, const OptimizeOptions& opti
   const std::string still = worse_than(r.after, r.before);
   if (still.empty()) {
     r.notes.push_back(restore_succeeded(r.method, rn, r));
+    end_default_run_2d(mesh, input, options, r);
     return r;
   }
-  r.notes.push_back("'" + r.method + "' made the mesh worse (" + worse + restore_failed(rn) +
-                    "): the input is kept unchanged");
   mesh = input;
-  r.kept_input = true;
   r.after = r.before;
   r.after.label = label;
+  const std::string why =
+      "'" + r.method + "' made the mesh worse (" + worse + restore_failed(rn) + ")";
+  if (improve_locally_2d(mesh, input, options, label, why + ": the input is kept", r)) return r;
+  r.notes.push_back(why + ": the input is kept unchanged");
+  r.kept_input = true;
   return r;
 }
 

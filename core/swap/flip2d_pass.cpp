@@ -6,6 +6,7 @@
 #include "core/mesh/face_key.h"
 #include "core/swap/flip2d.h"
 #include "core/swap/flip2d_delaunay.h"
+#include "core/swap/flip2d_no_worse.h"
 #include "core/swap/flip2d_quality.h"
 
 namespace cvtmesh {
@@ -36,6 +37,8 @@ long flip2d_pass(TriMesh2& mesh, const Flip2dPassOptions& options) {
     if (has_region && mesh.tri_region[t] != mesh.tri_region[t2]) continue;
     const bool wanted = options.criterion == FlipCriterion2d::kDelaunay
                             ? !is_locally_delaunay2d(mesh, slot)
+                        : options.criterion == FlipCriterion2d::kNoWorse
+                            ? flip2d_no_worse(mesh, slot)
                             : flip2d_improves_quality(mesh, slot, options.measure);
     if (!wanted || !flip2d(mesh, slot)) continue;
     ++flips;

@@ -8,6 +8,7 @@ namespace cvtmesh {
 enum class FlipCriterion2d {
   kDelaunay,  // flip edges that are not locally Delaunay (Lawson): the result is the CDT
   kQuality,   // flip edges whose flip raises the minimum quality of the two triangles
+  kNoWorse,   // flip edges whose flip no quality row can see as a loss (flip2d_no_worse.h)
 };
 
 struct Flip2dPassOptions {
