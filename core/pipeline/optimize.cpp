@@ -1006,14 +1006,14 @@ std::string restore_failed(const RestoreNote& rn) {
          std::to_string(rn.stats.nb_short_after);
 }
 
-// #V flags of the vertices of mesh's triangles that coincide with another one (exact
+// #V flags of the vertices of mesh that coincide with another one (exact
 // duplicates or within 1e-10 of the bounding box's diagonal); empty if there is none.
 std::vector<char> coincident_vertices_2d(const TriMesh2& mesh) {
   const int nv = mesh.nb_vertices();
-  std::vector<char> used(nv, 0);
-  for (int t = 0; t < mesh.nb_tris(); ++t)
-    if (mesh.tris[3 * t] >= 0)
-      for (int k = 0; k < 3; ++k) used[mesh.tris[3 * t + k]] = 1;
+  // Every vertex: the Lloyd step's Voronoi cells (voronoi_centroids2d) triangulate them all, the
+  // kept quadrangles' and free curves' too (Gmsh's tutorial t6: a quadrangle's corner and a
+  // triangle's at one place, the two surfaces touching there only).
+  const std::vector<char> used(nv, 1);
   std::vector<double> xyz(3 * static_cast<std::size_t>(nv), 0.0);
   for (int v = 0; v < nv; ++v) {
     xyz[3 * v] = mesh.xy[2 * v];
