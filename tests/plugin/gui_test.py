@@ -195,6 +195,7 @@ class Gui(unittest.TestCase):
         wid = xu.window("Gmsh")
         q = self.result_of("quality")
         self.assertIn("result", q, q)
+        time.sleep(1.0)  # let the window repaint
         # A synthetic click on the Run button, as a user would.
         _, height = xu.window_size(wid)
         xu.click(wid, MENU_WIDTH - 80, height - 39)

@@ -215,5 +215,27 @@ TEST(RobustInputs2d, OnlyTheDefaultRunEndsWithTheLocalPass) {
   EXPECT_TRUE(check_mesh(plain.tri).ok);
 }
 
+// Two surfaces touching at a corner through two distinct points at one place (as in Gmsh's
+// tutorial t6): the Lloyd step's Delaunay triangulation of every vertex cannot take the pair, so
+// the run goes local, pins them, and the mesh is served, not refused.
+TEST(RobustInputs2d, SurfacesTouchingAtACornerWithTwoNodesThereAreServed) {
+  const std::string geo =
+      write_text("touching_corner.geo",
+                 "Point(1) = {0,0,0,0.2}; Point(2) = {1,0,0,0.2}; Point(3) = {1,1,0,0.2};\n"
+                 "Point(4) = {0,1,0,0.2}; Point(5) = {1,1,0,0.2}; Point(6) = {2,1,0,0.2};\n"
+                 "Point(7) = {2,2,0,0.2}; Point(8) = {1,2,0,0.2};\n"
+                 "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4}; Line(4) = {4,1};\n"
+                 "Line(5) = {5,6}; Line(6) = {6,7}; Line(7) = {7,8}; Line(8) = {8,5};\n"
+                 "Curve Loop(1) = {1,2,3,4}; Plane Surface(1) = {1};\n"
+                 "Curve Loop(2) = {5,6,7,8}; Plane Surface(2) = {2};\n"
+                 "Transfinite Curve{1,2,3,4} = 6; Transfinite Surface{1}; Recombine Surface{1};\n");
+  MeshData d = read_mesh(geo);
+  ASSERT_EQ(d.dim, 2);
+  const OptimizeResult r = optimize(d, OptimizeOptions{});
+  EXPECT_TRUE(check_mesh(d.tri).ok);
+  EXPECT_EQ(worse_than(quality_stats(d.tri, ""), r.before), "");
+  EXPECT_TRUE(has_note(r, "coincide")) << (r.notes.empty() ? "" : r.notes.front());
+}
+
 }  // namespace
 }  // namespace cvtmesh
