@@ -403,7 +403,8 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
         // on a surface) likewise, with all their nodes: every one a vertex (pinned), the ones on
         // edges they share with tet10s those tet10s' mid-edge nodes too.
         const bool kept_order2 = dim == 3 && order2 && is_order2_kept_type(d, type);
-        if (kept_order2) {
+        // A block kept verbatim (ModelInfo::extra), all its nodes.
+        auto keep_block = [&] {
           ElementBlock b;
           b.dim = d;
           b.entity = t;
@@ -411,6 +412,9 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
           b.tags = tg;
           for (std::size_t n : nd) b.nodes.push_back(vid(n));
           info.extra.push_back(std::move(b));
+        };
+        if (kept_order2) {
+          keep_block();
           continue;
         }
         if (kept_type && order2)
@@ -419,13 +423,7 @@ MeshData mesh_from_gmsh(int dim, const std::string& what) {
                            "): order-2 hybrid meshes are not supported; optimize its order-1 "
                            "mesh (gmsh -order 1) and raise the order afterwards (gmsh -order 2)");
         if (kept_type || (d < dim - 1 && (type == 15 || type == 1))) {
-          ElementBlock b;
-          b.dim = d;
-          b.entity = t;
-          b.gmsh_type = type;
-          b.tags = tg;
-          for (std::size_t n : nd) b.nodes.push_back(vid(n));
-          info.extra.push_back(std::move(b));
+          keep_block();
         } else if (d == dim) {
           const int want = dim == 3 ? 4 : 2;
           // Quadrangles of order 1 (3), 2 (10: 9 nodes, 16: 8 nodes) or higher.
