@@ -41,32 +41,28 @@ def run(args, cwd=None):
     return r.returncode, r.stdout, r.stderr
 
 
+def copy_unzipped(src, dst):
+    """Every file of directory src into a new directory dst, the .gz ones gunzipped (a .geo may
+    include or merge its neighbours)."""
+    os.makedirs(dst)
+    for f in glob.glob(os.path.join(src, "*")):
+        if os.path.isfile(f):
+            if f.endswith(".gz"):
+                with gzip.open(f, "rb") as s, open(os.path.join(dst, os.path.basename(f)[:-3]), "wb") as t:
+                    shutil.copyfileobj(s, t)
+            else:
+                shutil.copy(f, dst)
+
+
 def input_path():
-    # A Gmsh demo, demo/DIR/NAME: DIR's files copied (the .geo may include or merge its
-    # neighbours), gunzipped.
+    # A Gmsh demo, demo/DIR/NAME: DIR's files.
     if a.model.startswith("demo/"):
         _, sub, name = a.model.split("/")
-        d = os.path.join(work, sub)
-        os.makedirs(d)
-        for f in glob.glob(os.path.join(a.demos, sub, "*")):
-            if os.path.isfile(f):
-                if f.endswith(".gz"):
-                    with gzip.open(f, "rb") as s, open(os.path.join(d, os.path.basename(f)[:-3]), "wb") as t:
-                        shutil.copyfileobj(s, t)
-                else:
-                    shutil.copy(f, d)
-        return os.path.join(d, name + ".geo")
+        copy_unzipped(os.path.join(a.demos, sub), os.path.join(work, sub))
+        return os.path.join(work, sub, name + ".geo")
     if a.model.startswith("t") and a.model[1:].isdigit():
-        tut = os.path.join(work, "tut")
-        os.makedirs(tut)
-        for f in glob.glob(os.path.join(a.tutorials, "*")):
-            if os.path.isfile(f):
-                if f.endswith(".gz"):
-                    with gzip.open(f, "rb") as s, open(os.path.join(tut, os.path.basename(f)[:-3]), "wb") as d:
-                        shutil.copyfileobj(s, d)
-                else:
-                    shutil.copy(f, tut)
-        return os.path.join(tut, a.model + ".geo")
+        copy_unzipped(a.tutorials, os.path.join(work, "tut"))
+        return os.path.join(work, "tut", a.model + ".geo")
     found = sorted(glob.glob(os.path.join(a.models, a.model + ".*")))
     if not found:
         print("no model " + a.model, file=sys.stderr)
