@@ -79,7 +79,12 @@ gmsh.open(sys.argv[1])
 t, _, _ = gmsh.model.mesh.getElements()
 types, tags, _ = gmsh.model.mesh.getElements()
 counts = {str(ty): len(tg) for ty, tg in zip(types, tags) if ty != 4}
-groups = sorted([d, g, gmsh.model.getPhysicalName(d, g)] for d, g in gmsh.model.getPhysicalGroups())
+# A partitioned file's interfaces between parts (points, curves, surfaces whose parent is of a
+# higher dimension) carry the groups of their parent under their own dimension: Gmsh makes them
+# for each cut (METIS cuts an optimized mesh anew), so they are not the model's groups.
+def of_model(d, g):
+    return any(gmsh.model.getParent(d, e)[0] <= d for e in gmsh.model.getEntitiesForPhysicalGroup(d, g))
+groups = sorted([d, g, gmsh.model.getPhysicalName(d, g)] for d, g in gmsh.model.getPhysicalGroups() if of_model(d, g))
 # Per surface entity: how many of its triangles turn positively / negatively around the tet that
 # holds them (of the lowest volume entity tag at an interface): sign of det(b - a, c - a, apex - a).
 # As verify_optimized counts them (core/pipeline/verify_mesh.cpp).
