@@ -167,25 +167,33 @@ bool read_mesh_meshes_a_model(const std::string& path) {
 MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   check_readable(path);
   const std::string ext = file_extension(path);
+  // An open surface in space that our own reader found (Medit, VTK): Gmsh reads the file below,
+  // as a surface mesh in space (gmsh_surface_mesh3.h), its surface references kept as entities.
+  bool surface_in_space = false;
   if (const auto* reader = find_reader(ext)) {
     MeshData d;
     try {
       d = (*reader)(path);
     } catch (SurfaceOnlyInput& e) {
       // Triangles in space, no tetrahedra: a closed surface's inside is meshed, as for an .stl.
-      if (options.dim == 2 || !surface_closes_up(e.surface)) throw;
-      orient_shells(e.surface);
-      d = tetrahedralize_surface(e.surface, "'" + path + "'", options);
-      d.model().read_notes.push_back("'" + path +
-                                     "' holds a closed surface and no tetrahedra: the volume "
-                                     "inside it meshed by Gmsh, the surface mesh kept");
+      if (options.dim == 2) throw;
+      surface_in_space = !surface_closes_up(e.surface);
+      if (!surface_in_space) {
+        orient_shells(e.surface);
+        d = tetrahedralize_surface(e.surface, "'" + path + "'", options);
+        d.model().read_notes.push_back("'" + path +
+                                       "' holds a closed surface and no tetrahedra: the volume "
+                                       "inside it meshed by Gmsh, the surface mesh kept");
+      }
     }
-    if (options.dim > 0 && d.dim != options.dim)
-      throw InputError("'" + path + "' holds a " + std::to_string(d.dim) + "D mesh, not a " +
-                       std::to_string(options.dim) + "D one (--dim " + std::to_string(options.dim) +
-                       ")");
-    d.model().source = path;
-    return d;
+    if (!surface_in_space) {
+      if (options.dim > 0 && d.dim != options.dim)
+        throw InputError("'" + path + "' holds a " + std::to_string(d.dim) + "D mesh, not a " +
+                         std::to_string(options.dim) + "D one (--dim " +
+                         std::to_string(options.dim) + ")");
+      d.model().source = path;
+      return d;
+    }
   }
   if (const char* format = write_only_format(ext))
     throw InputError("cannot read '" + path + "': " + format +

@@ -1,6 +1,7 @@
 // Files that hold a surface mesh and no tetrahedra (gmsh -2 -save_all, a closed surface exported
 // to .msh 2.2, Medit or VTK): the volumes inside are meshed by Gmsh and the surface mesh kept; an
-// open surface in space is still refused; formats Gmsh writes but cannot read get a clear error.
+// open surface in space is a surface mesh (no tets); formats Gmsh writes but cannot read get a
+// clear error.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,19 +109,37 @@ TEST(SurfaceOnly, ClosedSurfaceWithoutVolumesIsTetrahedralizedInEveryMeshFormat)
   }
 }
 
-TEST(SurfaceOnly, OpenSurfaceInSpaceAndWriteOnlyFormatsAreRefusedClearly) {
+TEST(SurfaceOnly, OpenSurfaceInSpaceIsASurfaceMeshAndWriteOnlyFormatsAreRefusedClearly) {
   const std::string dir = testing::temp_dir();
-  // A tilted open square: not a 2D mesh (z varies), bounds no volume.
-  const std::string vtk = dir + "/open.vtk";
+  // A tilted open square: not a 2D mesh (z varies), bounds no volume: a surface mesh in space
+  // (no tets), in VTK and in Medit, where each triangle reference is a surface of its own.
+  const std::string vtk = dir + "/open.vtk", medit = dir + "/open.mesh";
   std::ofstream(vtk) << "# vtk DataFile Version 2.0\nopen\nASCII\nDATASET UNSTRUCTURED_GRID\n"
                         "POINTS 4 double\n0 0 0\n1 0 0\n1 1 1\n0 1 1\nCELLS 2 8\n3 0 1 2\n"
                         "3 0 2 3\nCELL_TYPES 2\n5\n5\n";
-  try {
-    read_mesh(vtk);
-    FAIL() << "an open surface in space was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("open.vtk"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("no tetrahedra"), std::string::npos) << e.what();
+  std::ofstream(medit) << "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n"
+                          "1 1 1 0\n0 1 1 0\nTriangles\n2\n1 2 3 7\n1 3 4 9\nEnd\n";
+  for (const auto& [path, surfaces] :
+       std::vector<std::pair<std::string, std::set<int>>>{{vtk, {}}, {medit, {7, 9}}}) {
+    const MeshData d = read_mesh(path);
+    ASSERT_EQ(d.dim, 3) << path;
+    EXPECT_EQ(d.tet.nb_tets(), 0) << path;
+    EXPECT_EQ(d.tet.tris.size(), 6u) << path;
+    const std::set<int> got(d.tet.tri_surface.begin(), d.tet.tri_surface.end());
+    if (!surfaces.empty())
+      EXPECT_EQ(got, surfaces) << path;
+    else
+      EXPECT_EQ(got.size(), 1u) << path;
+    // Read as 2D (--dim 2) it is refused, naming the file and the defect.
+    ReadOptions as_2d;
+    as_2d.dim = 2;
+    try {
+      read_mesh(path, as_2d);
+      FAIL() << "an open surface in space was read as 2D";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("no tetrahedra"), std::string::npos) << e.what();
+    }
   }
   mesh_geo(dir, kTwoBoxes, "", "unused.msh");  // writes model.geo
   for (const auto& [ext, format] : std::vector<std::pair<std::string, std::string>>{
