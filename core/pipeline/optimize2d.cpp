@@ -43,7 +43,7 @@ OptimizeResult optimize_2d(TriMesh2& mesh, const OptimizeOptions& given) {
   if (options.progress)
     progress = [&](const LloydStep& s) {
       OptimizeProgress p = lloyd_progress(s, s.hop > 0 ? "hop " + std::to_string(s.hop) : phase,
-                                          quality_stats(mesh, ""));
+                                          quality_summary(mesh, ""));
       p.max_iterations = options.max_iterations;
       p.tolerance = options.tolerance;
       options.progress(p);

@@ -195,6 +195,14 @@ std::array<double, 4> tet_table_qualities(const double* a, const double* b, cons
           max_angle_of(cs)};
 }
 
+std::array<double, 2> tri_min_max_angle(const double* a, const double* b, const double* c,
+                                        int dim) {
+  const double area = tri_signed_area(a, b, c, dim);
+  const auto ang = tri_angles(a, b, c, dim);
+  const double lo = *std::min_element(ang.begin(), ang.end()) * kDeg;
+  return {area < 0 ? -lo : lo, *std::max_element(ang.begin(), ang.end()) * kDeg};
+}
+
 double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m) {
   const double area = tri_signed_area(a, b, c, dim);
   switch (m) {

@@ -32,5 +32,7 @@ std::array<double, 4> tet_table_qualities(const double* a, const double* b, cons
                                           const double* d);
 // Triangle a,b,c; dim = 2 (x,y; counter-clockwise positive) or 3 (x,y,z; always >= 0).
 double tri_quality(const double* a, const double* b, const double* c, int dim, Measure m);
+// tri_quality's kMinAngle and kMaxAngle at once, each bitwise its, for the cost of one.
+std::array<double, 2> tri_min_max_angle(const double* a, const double* b, const double* c, int dim);
 
 }  // namespace cvtmesh

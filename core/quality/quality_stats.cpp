@@ -245,6 +245,10 @@ double min_quality(const TriMesh2& mesh, Measure m) {
   return lo;
 }
 
+QualityStats quality_summary(const TriMesh2& mesh, const std::string& label) {
+  return quality_stats_from_values(element_qualities(mesh, Measure::kQ), {}, {}, {}, 2, label);
+}
+
 QualityStats quality_stats(const TriMesh2& mesh, const std::string& label) {
   QualityStats s = quality_stats_from_values(element_qualities(mesh, Measure::kQ),
                                              element_qualities(mesh, Measure::kRadiusRatio),

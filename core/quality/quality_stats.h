@@ -48,6 +48,7 @@ QualityStats quality_stats(const TriMesh2& mesh, const std::string& label);
 // good percentages; the angles and the radius ratio left 0), without the angles' cost: what a
 // progress report shows after every iteration. Its Q rows are quality_stats's, bit for bit.
 QualityStats quality_summary(const TetMesh& mesh, const std::string& label);
+QualityStats quality_summary(const TriMesh2& mesh, const std::string& label);
 // The minimum of a measure over the live elements (+infinity without any); tets in parallel.
 double min_quality(const TetMesh& mesh, Measure m);
 double min_quality(const TriMesh2& mesh, Measure m);

@@ -94,8 +94,9 @@ class VertexMover {
       const double q = tri_quality(x[0], x[1], x[2], 2, Measure::kQ);
       s.q_min = std::min(s.q_min, q);
       s.q_sum += q;
-      s.a_min = std::min(s.a_min, tri_quality(x[0], x[1], x[2], 2, Measure::kMinAngle));
-      s.a_max = std::max(s.a_max, tri_quality(x[0], x[1], x[2], 2, Measure::kMaxAngle));
+      const auto [lo, hi] = tri_min_max_angle(x[0], x[1], x[2], 2);
+      s.a_min = std::min(s.a_min, lo);
+      s.a_max = std::max(s.a_max, hi);
     }
     s.valid = true;
     return s;

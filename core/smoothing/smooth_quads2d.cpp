@@ -196,8 +196,9 @@ class QuadSmoother {
         const double q = tri_quality(a, b, c, 2, Measure::kQ);
         s.tq_min = std::min(s.tq_min, q);
         s.tq_sum += q;
-        s.ta_min = std::min(s.ta_min, tri_quality(a, b, c, 2, Measure::kMinAngle));
-        s.ta_max = std::max(s.ta_max, tri_quality(a, b, c, 2, Measure::kMaxAngle));
+        const auto [lo, hi] = tri_min_max_angle(a, b, c, 2);
+        s.ta_min = std::min(s.ta_min, lo);
+        s.ta_max = std::max(s.ta_max, hi);
       }
     }
     return s;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -139,6 +141,29 @@ TEST(TetQuality, TheTableMeasuresAtOnceAreEachMeasuresBits) {
     const double hi = *std::max_element(ang.begin(), ang.end()) * 180 / M_PI;
     EXPECT_NEAR(std::fabs(all[2]), lo, 1e-9);
     EXPECT_NEAR(all[3], hi, 1e-9);
+  }
+}
+
+TEST(TriQuality, MinMaxAngleAtOnceIsBitwiseTheSingleMeasures) {
+  std::uint32_t state = 12345;
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / double(1 << 24);
+  };
+  for (int i = 0; i < 2000; ++i) {
+    double p[3][3];
+    for (auto& q : p)
+      for (double& x : q) x = rnd();
+    if (i % 4 == 0)  // nearly flat: the third point close to the line of the first two
+      for (int k = 0; k < 3; ++k) p[2][k] = 0.5 * (p[0][k] + p[1][k]) + 1e-9 * (rnd() - 0.5);
+    for (int dim : {2, 3}) {
+      const auto both = tri_min_max_angle(p[0], p[1], p[2], dim);
+      EXPECT_EQ(both[0], tri_quality(p[0], p[1], p[2], dim, Measure::kMinAngle));
+      EXPECT_EQ(both[1], tri_quality(p[0], p[1], p[2], dim, Measure::kMaxAngle));
+      // Clockwise in 2D: the minimum angle negative, as tri_quality's.
+      const auto turned = tri_min_max_angle(p[1], p[0], p[2], dim);
+      EXPECT_EQ(turned[0], tri_quality(p[1], p[0], p[2], dim, Measure::kMinAngle));
+    }
   }
 }
 
