@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/boundary/boundary_fans.h"
-#include "core/boundary/boundary_move.h"
+#include "core/boundary/pattern_move.h"
 #include "core/geometry/predicates.h"
 #include "core/geometry/vec3.h"
 #include "core/mesh/vertex_tets.h"
@@ -94,50 +94,6 @@ double star_value(const TetMesh& mesh, const Star& s, const NodalRaiseOptions& o
   return value;
 }
 
-// The search directions of mover w: the coordinate axes and the cube's diagonals for an interior
-// vertex, six directions of its fan's tangent plane for a surface vertex, the two ways along its
-// curve's tangent for a curve vertex (none if the curve's tangent cannot be found).
-std::vector<Vec3> directions(const TetMesh& mesh, const BoundaryModel& model,
-                             const BoundaryFans& fans, int w, double len) {
-  std::vector<Vec3> d;
-  const BoundaryRole role = model.role_of(w).role;
-  if (role == BoundaryRole::kInterior) {
-    for (int k = 0; k < 3; ++k)
-      for (double s : {1.0, -1.0}) {
-        Vec3 e{0, 0, 0};
-        e[k] = s;
-        d.push_back(e);
-      }
-    const double r = 1 / std::sqrt(3.0);
-    for (double x : {r, -r})
-      for (double y : {r, -r})
-        for (double z : {r, -r}) d.push_back({x, y, z});
-    return d;
-  }
-  const double* P = mesh.point(w);
-  if (role == BoundaryRole::kSurface) {
-    const Vec3 n = fan_normal(mesh, fans, w);
-    if (!(norm(n) > 0)) return d;
-    const Vec3 nn = (1 / norm(n)) * n;
-    // Two unit vectors spanning the plane orthogonal to nn.
-    const Vec3 helper = std::fabs(nn[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    Vec3 u = cross(nn, helper);
-    u = (1 / norm(u)) * u;
-    const Vec3 v = cross(nn, u);
-    for (int k = 0; k < 6; ++k) {
-      const double a = k * 3.14159265358979323846 / 3;
-      d.push_back(std::cos(a) * u + std::sin(a) * v);
-    }
-    return d;
-  }
-  Vec3 axis;
-  if (role == BoundaryRole::kCurve && curve_tangent(model, w, P, len, axis.data())) {
-    d.push_back(axis);
-    d.push_back(-1.0 * axis);
-  }
-  return d;
-}
-
 }  // namespace
 
 NodalRaiseStats raise_nodal_steps(TetMesh& mesh, const BoundaryModel& model,
@@ -156,7 +112,14 @@ NodalRaiseStats raise_nodal_steps(TetMesh& mesh, const BoundaryModel& model,
   if (low.empty()) return stats;
   const VertexTets vt = vertex_tets(mesh);
   const BoundaryFans fans = model.geometry ? boundary_fans(mesh) : BoundaryFans{};
-  std::vector<double> k_sum, m_sum, delta;
+  std::vector<double> k_sum, m_sum;
+  PatternMoveOptions search;
+  search.hausdorff = o.hausdorff;
+  search.volume_budget = o.volume_budget;
+  search.max_evaluations = o.max_evaluations;
+  search.initial_step = o.initial_step;
+  search.final_step = o.final_step;
+  search.stop_at = o.target;
   for (int pass = 0; pass < o.passes && !low.empty(); ++pass) {
     std::sort(low.begin(), low.end());
     if (static_cast<int>(low.size()) > o.max_vertices) low.resize(o.max_vertices);
@@ -170,64 +133,12 @@ NodalRaiseStats raise_nodal_steps(TetMesh& mesh, const BoundaryModel& model,
       std::sort(movers.begin(), movers.end());
       movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
       for (int w : movers) {
-        const BoundaryRole role = model.role_of(w).role;
-        const bool interior = role == BoundaryRole::kInterior;
-        if (interior ? mesh.vclass[w].dim != 3 : !(model.geometry && model.movable(w))) continue;
+        if (!may_move(mesh, model, w)) continue;
         const Star s = star_of(mesh, vt, steps, w, o);
-        double* P = mesh.point(w);
-        const Vec3 start = vec3(P);
-        const double start_value = star_value(mesh, s, o, k_sum, m_sum);
-        if (!(start_value > -kInf) || start_value >= o.target) continue;
-        const double len = shortest_star_edge(mesh, vt.begin_of(w), vt.end_of(w), w);
-        if (!(len > 0) || len == kInf) continue;
-        const std::vector<Vec3> dirs = directions(mesh, model, fans, w, len);
-        double value = start_value, step = o.initial_step * len;
-        int evaluations = 0;
-        while (step >= o.final_step * len && evaluations < o.max_evaluations) {
-          const Vec3 here = vec3(P);
-          Vec3 best_pos = here;
-          double best = value;
-          for (const Vec3& d : dirs) {
-            if (++evaluations > o.max_evaluations) break;
-            const Vec3 wanted = here + step * d;
-            Vec3 pos = wanted;
-            if (!interior) {
-              for (int c = 0; c < 3; ++c) P[c] = here[c];
-              // The Hausdorff check after the cheaper ones, as the boundary max-min does.
-              const PlannedBoundaryMove plan =
-                  plan_boundary_move(mesh, model, vt, fans, w, wanted.data(), kInf);
-              if (plan.status != BoundaryMoveStatus::kOk) continue;
-              pos = {plan.position[0], plan.position[1], plan.position[2]};
-            }
-            for (int c = 0; c < 3; ++c) P[c] = pos[c];
-            if (!interior && !fan_within_tolerance(mesh, model, fans, w, pos.data(), o.hausdorff))
-              continue;
-            const double x = star_value(mesh, s, o, k_sum, m_sum);
-            if (x > best) {
-              best = x;
-              best_pos = pos;
-            }
-          }
-          for (int c = 0; c < 3; ++c) P[c] = best_pos[c];
-          if (best > value) {
-            value = best;
-            if (value >= o.target) break;
-          } else {
-            step *= 0.5;
-          }
-        }
-        bool keep = value > start_value * (1 + 1e-9);
-        if (keep && !interior && o.volume_budget) {
-          const Vec3 now = vec3(P);
-          for (int c = 0; c < 3; ++c) P[c] = start[c];
-          keep = o.volume_budget->admits(mesh, vt, w, now.data(), delta);
-          if (keep) o.volume_budget->commit(delta);
-          for (int c = 0; c < 3; ++c) P[c] = now[c];
-        }
-        if (!keep) {
-          for (int c = 0; c < 3; ++c) P[c] = start[c];
+        if (!pattern_move(
+                mesh, model, vt, fans, w, [&] { return star_value(mesh, s, o, k_sum, m_sum); },
+                search))
           continue;
-        }
         ++stats.nb_moved;
         ++moved_this_pass;
         // The sums of the star's vertices at the new position.

@@ -4,10 +4,10 @@
 // boundary, a surface or curve vertex with a few flat tets around it (Gmsh t20: a curve vertex of
 // 3 tets, 0.68x the input's global step; igl_cheburashka: a surface vertex of 1 tet). For each
 // vertex v whose nodal step is below `target`, lowest first, v and each vertex sharing a tet with
-// it are moved in turn by a pattern search (interior vertices in space, surface vertices in their
-// fan's tangent plane, curve vertices along their curve, each projected onto its entity of the
-// reference geometry) on the mover's star's minimum over its vertices of min(nodal step,
-// target): a vertex above the target may come down to it, none below it falls. A position is
+// it are moved in turn by a pattern search (pattern_move.h: interior vertices in space, surface
+// vertices in their fan's tangent plane, curve vertices along their curve, each projected onto its
+// entity of the reference geometry) on the mover's star's minimum over its vertices of min(nodal
+// step, target): a vertex above the target may come down to it, none below it falls. A position is
 // taken only if:
 //  - every tet of the mover's star stays positively oriented (exact orient3d) and, for a boundary
 //    vertex, plan_boundary_move accepts it (no fold, the fan within the Hausdorff tolerance) and
