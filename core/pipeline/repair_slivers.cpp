@@ -234,20 +234,44 @@ NelderMeadVertexOptions placement_bounds(const TetMesh& m, const std::vector<int
   return no;
 }
 
+// The copy m with vertex p inserted by plan, then the polish; with to_mesh_extremes the inserted
+// vertex is then placed by the simplex search within placement_bounds.
+Candidate inserted_candidate(const TetMesh& m, SwapPlan plan, const Vec3& at,
+                             const RepairOptions& o, const Score& extremes) {
+  Candidate c;
+  c.mesh = m;
+  const int p = c.mesh.nb_vertices();
+  insert_vertex(c.mesh, plan, at.data());
+  free_only_around(c.mesh, plan.new_ids);
+  local_polish(c.mesh, o);
+  if (o.to_mesh_extremes) {
+    const std::vector<int> star = star_of(c.mesh, p);
+    nelder_mead_vertex(c.mesh, p, star.data(), static_cast<int>(star.size()),
+                       placement_bounds(m, plan.old_tets, o, extremes));
+  }
+  c.inserted = true;
+  c.valid = true;
+  return c;
+}
+
 // Insertion into tet t of the copy: the best (point, cavity) by the minimum of the new tets, then
-// the polish. The pairs tried: each point of insertion_points with the smallest cavity and with
-// its Bowyer-Watson growth; the kernel centre of the smallest cavity with it, and the kernel
-// centre of its growth from that centre with that growth. With to_mesh_extremes the inserted vertex
-// is then placed by the simplex search within placement_bounds.
-Candidate try_insertion(const TetMesh& m, const ConstrainedFaces& constrained, int t,
-                        const RepairOptions& o, const Score& extremes) {
-  Candidate best;
+// the polish (inserted_candidate); with every_placement, each (point, cavity) so (the caller
+// judges them after their placement). The pairs tried: each point of insertion_points with the
+// smallest cavity and with its Bowyer-Watson growth; the kernel centre of the smallest cavity
+// with it, and the kernel centre of its growth from that centre with that growth.
+std::vector<Candidate> try_insertion(const TetMesh& m, const ConstrainedFaces& constrained, int t,
+                                     const RepairOptions& o, const Score& extremes) {
+  std::vector<Candidate> all;
   SwapPlan best_plan;
   Vec3 best_p{};
   double best_min = -kInf;
   auto consider = [&](const Vec3& p, const std::vector<int>& cavity) {
     SwapPlan plan = plan_insert_vertex(m, cavity, p.data());
     if (plan.status != SwapStatus::kOk) return;
+    if (o.every_placement) {
+      all.push_back(inserted_candidate(m, std::move(plan), p, o, extremes));
+      return;
+    }
     // The new tets' minimum, with p in place (index nb_vertices).
     Score s;
     for (const auto& nt : plan.new_tets) {
@@ -274,20 +298,9 @@ Candidate try_insertion(const TetMesh& m, const ConstrainedFaces& constrained, i
   grow_cavity(m, constrained, centre.data(), grown, o.max_cavity);
   if (grown.size() > small.size() && cavity_kernel_center(m, grown, centre.data()) > 0)
     consider(centre, grown);
-  if (best_min == -kInf) return best;
-  best.mesh = m;
-  const int p = best.mesh.nb_vertices();
-  insert_vertex(best.mesh, best_plan, best_p.data());
-  free_only_around(best.mesh, best_plan.new_ids);
-  local_polish(best.mesh, o);
-  if (o.to_mesh_extremes) {
-    const std::vector<int> star = star_of(best.mesh, p);
-    nelder_mead_vertex(best.mesh, p, star.data(), static_cast<int>(star.size()),
-                       placement_bounds(m, best_plan.old_tets, o, extremes));
-  }
-  best.inserted = true;
-  best.valid = true;
-  return best;
+  if (best_min > -kInf)
+    all.push_back(inserted_candidate(m, std::move(best_plan), best_p, o, extremes));
+  return all;
 }
 
 // The interior vertices of tet t of the copy moved one after the other by the simplex search
@@ -403,7 +416,9 @@ RepairStats repair_slivers(TetMesh& mesh, const RepairOptions& o) {
           best_score = now;
         }
       };
-      if (o.insert) offer(try_insertion(local.mesh, local_constrained, 0, o, start));
+      if (o.insert)
+        for (Candidate& c : try_insertion(local.mesh, local_constrained, 0, o, start))
+          offer(std::move(c));
       if (o.flip)
         for (int e = 0; e < 10; ++e) offer(try_flip(local.mesh, local_constrained, 0, e, o));
       if (o.to_mesh_extremes) offer(try_moves(local.mesh, 0, o, start));

@@ -51,6 +51,9 @@ struct RepairOptions {
   // of a valence-3 surface vertex, a CAD corner) may take the room the rest of the mesh leaves.
   bool to_mesh_extremes = false;
   double angle_ceiling = 150;  // degrees (to_mesh_extremes)
+  // Every (point, cavity) pair of an insertion polished and placed, each judged as a result (not
+  // only the pair whose new tets' minimum is the highest before the placement).
+  bool every_placement = false;
   // The time-step guard (time_step_guard.h; off by default): a result is also refused when the
   // smallest element time step of the tets it changes falls below min(its value before, floor).
   TimeStepGuard dt_guard;

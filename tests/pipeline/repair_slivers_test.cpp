@@ -184,6 +184,30 @@ TEST(RepairSlivers, ToTheMeshExtremesTheAnglesStayWithinTheMeshsAndTheTimeStepIs
   EXPECT_EQ(again.tets, m.tets);
 }
 
+TEST(RepairSlivers, EveryPlacementEndsNoLowerThanTheBestPairBeforeItsPlacement) {
+  // With every_placement each (point, cavity) pair of the insertion is polished, placed and
+  // judged: the pair the default picks is among them, so the one sliver of the micro-case ends
+  // at least as high, with the same invariants.
+  RepairOptions o;
+  o.to_mesh_extremes = true;
+  o.angle_ceiling = 180;
+  const TetMesh start = locked_sliver(0.02);
+  TetMesh one = start, every = start;
+  const RepairStats s1 = repair_slivers(one, o);
+  o.every_placement = true;
+  const RepairStats s2 = repair_slivers(every, o);
+  ::testing::Test::RecordProperty(
+      "q_min", std::to_string(s1.q_min_after) + " / " + std::to_string(s2.q_min_after));
+  EXPECT_GE(s2.nb_inserted, 1);
+  EXPECT_GE(global_min_quality(every, Measure::kQ), global_min_quality(one, Measure::kQ));
+  EXPECT_GE(global_min_quality(every, Measure::kMinAngle),
+            global_min_quality(start, Measure::kMinAngle));
+  EXPECT_TRUE(check_mesh(every).ok);
+  EXPECT_EQ(nb_not_positive(every), 0);
+  EXPECT_EQ(constrained_triples(every), constrained_triples(start));
+  EXPECT_NO_THROW(verify_optimized(start, every));
+}
+
 TEST(RepairSlivers, ThePipelinesPolishEndsWithItAndVerifiesTheResult) {
   // The same run with the repair (the default): its minima are at least those without it (the
   // repair runs last), the run's own verify_optimized passed, the result is reproducible.
