@@ -172,7 +172,9 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
   p.w = w;
   if (v == w) return CollapseCheck::kNotSurface;
   p.fold = o.fold_vertices && is_fold_vertex(m, model, fans, v);
-  if (!p.fold && model.role_of(v).role != BoundaryRole::kSurface) return CollapseCheck::kNotSurface;
+  p.cap = !p.fold && o.cap_vertices && is_cap_vertex(m, model, star, fans, v);
+  if (!p.fold && !p.cap && model.role_of(v).role != BoundaryRole::kSurface)
+    return CollapseCheck::kNotSurface;
   // Classified on a surface of the mesh's model (not a Gmsh point or curve).
   if (v >= static_cast<int>(m.vclass.size()) || m.vclass[v].dim != 2)
     return CollapseCheck::kNotSurface;
@@ -240,11 +242,11 @@ CollapseCheck plan_boundary_collapse(const TetMesh& m, const BoundaryModel& mode
     if (orient3d(at(x[0]), at(x[1]), at(x[2]), at(x[3])) <= 0) return CollapseCheck::kInverted;
     add_tet(after, at(x[0]), at(x[1]), at(x[2]), at(x[3]));
   }
-  // Nothing of v's star left: only a fold vertex on a single tet whose face opposite v is
+  // Nothing of v's star left: only a fold or cap vertex on a single tet whose face opposite v is
   // interior, of the same region, may go (the tet behind that face then stands on the boundary);
   // anything else would remove a piece of the domain.
   if (p.move_tets.empty()) {
-    if (!p.fold || p.kill_tets.size() != 1) return CollapseCheck::kLink;
+    if (!(p.fold || p.cap) || p.kill_tets.size() != 1) return CollapseCheck::kLink;
     const std::size_t t4 = 4 * static_cast<std::size_t>(p.kill_tets[0]);
     int behind = -1;
     for (int k = 0; k < 4; ++k)
@@ -368,11 +370,21 @@ void apply_boundary_collapse(TetMesh& m, BoundaryModel& model, const CollapsePla
       if (m.tris[3 * static_cast<std::size_t>(f) + k] == p.v)
         m.tris[3 * static_cast<std::size_t>(f) + k] = p.w;
   if (p.v < static_cast<int>(model.role.size())) model.role[p.v] = {BoundaryRole::kFixed, -1};
-  if (p.fold) {
+  if (p.fold || p.cap) {
     auto& e = model.curve_edges;
+    std::vector<int> ends;  // the other ends of v's curve edges
+    for (const auto& x : e)
+      if (x[0] == p.v || x[1] == p.v) ends.push_back(x[0] == p.v ? x[1] : x[0]);
     e.erase(std::remove_if(e.begin(), e.end(),
                            [&](const std::array<int, 2>& x) { return x[0] == p.v || x[1] == p.v; }),
             e.end());
+    // A cap vertex on a curve: the curve goes on along the edge between its two neighbours on it
+    // (an edge of the triangle left), kept sorted.
+    if (p.cap && ends.size() == 2) {
+      const std::array<int, 2> x{std::min(ends[0], ends[1]), std::max(ends[0], ends[1])};
+      const auto at = std::lower_bound(e.begin(), e.end(), x);
+      if (at == e.end() || *at != x) e.insert(at, x);
+    }
   }
 }
 
@@ -392,6 +404,21 @@ bool is_fold_vertex(const TetMesh& m, const BoundaryModel& model, const Boundary
   for (int i = 0; i < 3; ++i)
     if (turned_over(i, (i + 1) % 3) && turned_over(i, (i + 2) % 3)) return true;
   return false;
+}
+
+bool is_cap_vertex(const TetMesh& m, const BoundaryModel& model, const VertexTets& star,
+                   const BoundaryFans& fans, int v) {
+  // A curve vertex too where the curves are the discrete boundary's features (the vertex on a
+  // surface of the mesh's model: plan_boundary_collapse checks it); its two curve edges become
+  // one (apply_boundary_collapse).
+  if (!model.movable(v)) return false;
+  if (fans.end_of(v) - fans.begin_of(v) != 3 || star.end_of(v) - star.begin_of(v) != 1)
+    return false;
+  const int* x = &m.tets[4 * static_cast<std::size_t>(*star.begin_of(v))];
+  for (const int* f = fans.begin_of(v); f != fans.end_of(v); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (std::find(x, x + 4, m.tris[3 * static_cast<std::size_t>(*f) + k]) == x + 4) return false;
+  return true;
 }
 
 void compact_boundary_triangles(TetMesh& m) {

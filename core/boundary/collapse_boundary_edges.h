@@ -14,8 +14,8 @@
 //  - the link condition (Dey et al., with the boundary coned to a vertex at infinity): the
 //    links of v and w meet exactly in the link of (v, w) — no duplicate tet or triangle, each
 //    surface keeps its topology (Euler characteristic, boundary edges), the volume its own;
-//    some tet of v's star not on (v, w), unless v is a fold vertex standing on one tet whose
-//    face opposite v is interior;
+//    some tet of v's star not on (v, w), unless v is a fold vertex (or, with cap_vertices, a cap
+//    vertex) standing on one tet whose face opposite v is interior;
 //  - every changed tet positive (exact orient3d), the new star's minimum Q and dihedral angle
 //    not below min(the old star's minimum, q_floor / angle_floor), the new boundary triangles'
 //    Q not below min(the old fan's minimum, tri_floor), each new triangle turning by at most
@@ -53,6 +53,13 @@ struct BoundaryCollapseOptions {
   // acos(kFoldFloor), about 154 degrees): an input defect. Its curve edges go with it. Off for
   // the coarsening.
   bool fold_vertices = false;
+  // A cap vertex may go too (remove_low_step_caps.h): a surface vertex of valence 3 standing on
+  // a single tet, its three triangles that tet's faces; the tet goes and its fourth face, interior
+  // before, becomes the surface triangle (the nodal step of such a vertex is the tet's height
+  // over that face: igl_cheburashka's lowest). A vertex of a curve too where the mesh's model
+  // classifies it on a surface (a discrete boundary's feature curve): its two curve edges are
+  // replaced by the edge between their other ends. Off for the coarsening.
+  bool cap_vertices = false;
 };
 
 enum class CollapseCheck {
@@ -71,6 +78,7 @@ enum class CollapseCheck {
 struct CollapsePlan {
   int v = -1, w = -1;
   bool fold = false;  // v is a fold vertex (BoundaryCollapseOptions::fold_vertices)
+  bool cap = false;   // v is a cap vertex (BoundaryCollapseOptions::cap_vertices)
   std::vector<int> kill_tets, move_tets, kill_tris, move_tris;
   std::vector<double> delta;  // per VolumeBudget region (empty without a budget)
 };
@@ -93,6 +101,12 @@ void apply_boundary_collapse(TetMesh& mesh, BoundaryModel& model, const Collapse
 // Whether v is a fold vertex (BoundaryCollapseOptions::fold_vertices); `fans` current.
 bool is_fold_vertex(const TetMesh& mesh, const BoundaryModel& model, const BoundaryFans& fans,
                     int v);
+
+// Whether v is a cap vertex (BoundaryCollapseOptions::cap_vertices): a movable surface or curve
+// vertex of the model with three triangles, all faces of the one tet of its star; `star`, `fans`
+// current.
+bool is_cap_vertex(const TetMesh& mesh, const BoundaryModel& model, const VertexTets& star,
+                   const BoundaryFans& fans, int v);
 
 // Drops the triangles marked dead (tris[3f] < 0) with their surface and element tags.
 void compact_boundary_triangles(TetMesh& mesh);

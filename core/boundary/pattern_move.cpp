@@ -70,27 +70,33 @@ bool pattern_move(TetMesh& mesh, const BoundaryModel& model, const VertexTets& v
     const Vec3 here = vec3(P);
     Vec3 best_pos = here;
     double best = value;
-    for (const Vec3& d : dirs) {
-      if (++evaluations > o.max_evaluations) break;
-      const Vec3 wanted = here + step * d;
-      Vec3 pos = wanted;
-      if (!interior) {
-        for (int c = 0; c < 3; ++c) P[c] = here[c];
-        // The Hausdorff check after the cheaper ones, as the boundary max-min does.
-        const PlannedBoundaryMove plan =
-            plan_boundary_move(mesh, model, vt, fans, w, wanted.data(), kInf);
-        if (plan.status != BoundaryMoveStatus::kOk) continue;
-        pos = {plan.position[0], plan.position[1], plan.position[2]};
+    auto try_directions = [&](const std::vector<Vec3>& ds) {
+      for (const Vec3& d : ds) {
+        if (++evaluations > o.max_evaluations) break;
+        const Vec3 wanted = here + step * d;
+        Vec3 pos = wanted;
+        if (!interior) {
+          for (int c = 0; c < 3; ++c) P[c] = here[c];
+          // The Hausdorff check after the cheaper ones, as the boundary max-min does.
+          const PlannedBoundaryMove plan =
+              plan_boundary_move(mesh, model, vt, fans, w, wanted.data(), kInf);
+          if (plan.status != BoundaryMoveStatus::kOk) continue;
+          pos = {plan.position[0], plan.position[1], plan.position[2]};
+        }
+        for (int c = 0; c < 3; ++c) P[c] = pos[c];
+        if (!interior && !fan_within_tolerance(mesh, model, fans, w, pos.data(), o.hausdorff))
+          continue;
+        const double x = value_of();
+        if (x > best) {
+          best = x;
+          best_pos = pos;
+        }
       }
-      for (int c = 0; c < 3; ++c) P[c] = pos[c];
-      if (!interior && !fan_within_tolerance(mesh, model, fans, w, pos.data(), o.hausdorff))
-        continue;
-      const double x = value_of();
-      if (x > best) {
-        best = x;
-        best_pos = pos;
-      }
-    }
+      for (int c = 0; c < 3; ++c) P[c] = here[c];
+    };
+    try_directions(dirs);
+    if (!(best > value) && interior && o.extra_directions && evaluations < o.max_evaluations)
+      try_directions(o.extra_directions(o.final_step * len));
     for (int c = 0; c < 3; ++c) P[c] = best_pos[c];
     if (best > value) {
       value = best;

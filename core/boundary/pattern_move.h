@@ -29,6 +29,10 @@ struct PatternMoveOptions {
   double initial_step = 0.25;  // the first step: this fraction of the mover's shortest star edge
   double final_step = 1e-3;    // the search stops below this fraction of it
   double stop_at = std::numeric_limits<double>::infinity();  // the search ends at this value
+  // An interior mover's further directions, tried only in a round where none of the fixed ones
+  // raises the value (given the search's smallest step length, an absolute distance); none if
+  // empty (raise_nodal_steps.h: the gradient's directions).
+  std::function<std::vector<Vec3>(double final_length)> extra_directions;
 };
 
 // The search directions of mover w (above; none for a curve whose tangent cannot be found).

@@ -39,6 +39,10 @@ struct NodalRaiseOptions {
   int max_evaluations = 200;              // positions evaluated per mover at most
   double initial_step = 0.25;  // the first step: this fraction of the mover's shortest star edge
   double final_step = 1e-3;    // the search stops below this fraction of it
+  // Where none of the fixed directions of an interior mover rises, the directions of the star
+  // value's gradient, with its components against the bounds nearly reached taken out (the star
+  // on its bounds, the way up a narrow cone between the fixed directions).
+  bool gradient_directions = false;
 };
 
 struct NodalRaiseStats {

@@ -84,6 +84,32 @@ TEST(RaiseNodalSteps, TheLowestRiseWithinTheMeshExtremesAndFacesStayFlat) {
   EXPECT_GT(moved_boundary, 0);
 }
 
+// With the gradient's directions where the fixed ones fail (interior movers), the same
+// invariants: no vertex below min(its step before, the target), no row of the mesh worse, the
+// mesh valid, the smallest step at least as high as before.
+TEST(RaiseNodalSteps, TheGradientDirectionsKeepTheBounds) {
+  TetMesh m = jittered_box(0.35);
+  const BoundaryModel b = make_discrete_boundary(m);
+  const VertexTimeSteps before = vertex_time_steps(m);
+  const double low = min_vertex_time_step(m);
+  const QualityStats q0 = quality_stats(m, "");
+  const double dt0 = min_time_step(m);
+  NodalRaiseOptions o = bounds_of(m, 1.3 * low);
+  o.gradient_directions = true;
+  raise_nodal_steps(m, b, o);
+  ASSERT_TRUE(check_mesh(m).ok);
+  EXPECT_EQ(testing::nb_not_positive(m), 0);
+  EXPECT_GT(min_vertex_time_step(m), low * 1.01);
+  const VertexTimeSteps after = vertex_time_steps(m);
+  for (int v = 0; v < m.nb_vertices(); ++v)
+    EXPECT_GE(after.dt(v), std::min(before.dt(v), o.target) * (1 - 1e-12)) << v;
+  const QualityStats q1 = quality_stats(m, "");
+  EXPECT_GE(q1.q_min, q0.q_min);
+  EXPECT_GE(q1.min_angle, q0.min_angle);
+  EXPECT_LE(q1.max_angle, q0.max_angle);
+  EXPECT_GE(min_time_step(m), dt0);
+}
+
 TEST(RaiseNodalSteps, AMeshAboveTheTargetIsLeftAlone) {
   TetMesh m = jittered_box(0.35);
   const TetMesh start = m;
