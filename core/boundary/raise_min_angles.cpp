@@ -113,11 +113,9 @@ AngleRaiseStats raise_min_angles(TetMesh& mesh, const BoundaryModel& model,
       }
     }
     if (moved_this_pass == 0) break;
+    // stats.min_after stays the mesh's smallest angle: computed again after every pass that moved.
     low = low_tets(mesh, o, stats.min_after);
   }
-  double lowest;
-  low_tets(mesh, o, lowest);
-  stats.min_after = lowest;
   return stats;
 }
 
