@@ -89,12 +89,7 @@ AngleRaiseStats raise_min_angles(TetMesh& mesh, const BoundaryModel& model,
   if (low.empty()) return stats;
   const VertexTets vt = vertex_tets(mesh);
   const BoundaryFans fans = model.geometry ? boundary_fans(mesh) : BoundaryFans{};
-  PatternMoveOptions search;
-  search.hausdorff = o.hausdorff;
-  search.volume_budget = o.volume_budget;
-  search.max_evaluations = o.max_evaluations;
-  search.initial_step = o.initial_step;
-  search.final_step = o.final_step;
+  PatternMoveOptions search = o.search;
   search.stop_at = o.target;
   for (int pass = 0; pass < o.passes && !low.empty(); ++pass) {
     if (static_cast<int>(low.size()) > o.max_tets) low.resize(o.max_tets);

@@ -16,9 +16,8 @@
 // budget). Connectivity never changes; corners, locked and pinned vertices never move.
 // Serial, in a fixed order.
 #pragma once
-#include <limits>
 
-#include "core/boundary/volume_budget.h"
+#include "core/boundary/pattern_move.h"
 #include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
 
@@ -28,13 +27,11 @@ struct AngleRaiseOptions {
   double target = 0;  // degrees: the tets whose smallest dihedral angle is below it are raised
   // The bounds every tet of a mover's star keeps (above).
   double q_floor = 0, angle_ceiling = 180, dt_floor = 0;
-  double hausdorff = std::numeric_limits<double>::infinity();  // absolute
-  VolumeBudget* volume_budget = nullptr;  // if set, boundary moves stay within it (charged)
-  int max_tets = 32;                      // low tets tried at most per pass (the lowest first)
-  int passes = 3;                         // passes over the low tets (stops when nothing moves)
-  int max_evaluations = 200;              // positions evaluated per mover at most
-  double initial_step = 0.25;  // the first step: this fraction of the mover's shortest star edge
-  double final_step = 1e-3;    // the search stops below this fraction of it
+  int max_tets = 32;  // low tets tried at most per pass (the lowest first)
+  int passes = 3;     // passes over the low tets (stops when nothing moves)
+  // Each mover's search (pattern_move.h): the Hausdorff bound, the volume budget, its steps and
+  // evaluations; its stop_at is set here (the target).
+  PatternMoveOptions search;
 };
 
 struct AngleRaiseStats {

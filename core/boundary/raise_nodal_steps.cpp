@@ -196,12 +196,7 @@ NodalRaiseStats raise_nodal_steps(TetMesh& mesh, const BoundaryModel& model,
   const VertexTets vt = vertex_tets(mesh);
   const BoundaryFans fans = model.geometry ? boundary_fans(mesh) : BoundaryFans{};
   std::vector<double> k_sum, m_sum;
-  PatternMoveOptions search;
-  search.hausdorff = o.hausdorff;
-  search.volume_budget = o.volume_budget;
-  search.max_evaluations = o.max_evaluations;
-  search.initial_step = o.initial_step;
-  search.final_step = o.final_step;
+  PatternMoveOptions search = o.search;
   search.stop_at = o.target;
   for (int pass = 0; pass < o.passes && !low.empty(); ++pass) {
     std::sort(low.begin(), low.end());

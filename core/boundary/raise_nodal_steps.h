@@ -19,9 +19,8 @@
 // Connectivity never changes; corners, locked and pinned vertices never move (the roles of
 // `model`; an interior vertex moves when its vclass.dim is 3). Serial, in a fixed order.
 #pragma once
-#include <limits>
 
-#include "core/boundary/volume_budget.h"
+#include "core/boundary/pattern_move.h"
 #include "core/geometry/boundary_geometry.h"
 #include "core/mesh/tet_mesh.h"
 
@@ -32,13 +31,11 @@ struct NodalRaiseOptions {
   // The bounds every tet of a mover's star keeps (above); a tet's maximum dihedral angle's bound
   // is max(angle_ceiling, its maximum before the move).
   double q_floor = 0, angle_floor = 0, angle_ceiling = 180, dt_floor = 0;
-  double hausdorff = std::numeric_limits<double>::infinity();  // absolute
-  VolumeBudget* volume_budget = nullptr;  // if set, boundary moves stay within it (charged)
-  int max_vertices = 64;                  // low vertices tried at most per pass (the lowest first)
-  int passes = 3;                         // passes over the low vertices (stops when nothing moves)
-  int max_evaluations = 200;              // positions evaluated per mover at most
-  double initial_step = 0.25;  // the first step: this fraction of the mover's shortest star edge
-  double final_step = 1e-3;    // the search stops below this fraction of it
+  int max_vertices = 64;  // low vertices tried at most per pass (the lowest first)
+  int passes = 3;         // passes over the low vertices (stops when nothing moves)
+  // Each mover's search (pattern_move.h): the Hausdorff bound, the volume budget, its steps and
+  // evaluations; its stop_at and extra_directions are set here (the target, the gradient's).
+  PatternMoveOptions search;
   // Where none of the fixed directions of an interior mover rises, the directions of the star
   // value's gradient, with its components against the bounds nearly reached taken out (the star
   // on its bounds, the way up a narrow cone between the fixed directions).

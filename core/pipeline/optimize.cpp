@@ -473,15 +473,15 @@ int raise_low_time_steps(TetMesh& mesh, const OptimizeOptions& o, BoundaryModel&
   // to a different end (with the star's maximum as a tet's bound instead of its own: 156.99).
   no.angle_ceiling = std::min(150.0, q.max_angle);
   no.dt_floor = std::min(min_time_step(mesh), input.element);
-  no.hausdorff = hausdorff;
-  no.volume_budget = &budget;
+  no.search.hausdorff = hausdorff;
+  no.search.volume_budget = &budget;
   // One attempt on (m, bm, bu): the moves; where they leave vertices below the target, the cap
   // vertices among them removed (remove_low_step_caps: igl_cheburashka's vertex of a feature
   // curve on a single flat tet, Q 0.0146, the mesh's Q_min) and the moves again. Returns the
   // number of vertices removed.
   auto attempt = [&](TetMesh& m, BoundaryModel& bm, VolumeBudget& bu, bool gradient) {
     NodalRaiseOptions x = no;
-    x.volume_budget = &bu;
+    x.search.volume_budget = &bu;
     x.gradient_directions = gradient;
     if (!(raise_nodal_steps(m, bm, x).min_after < input.nodal) ||
         !may_remove_surface_vertices(m, o))
@@ -538,9 +538,9 @@ void raise_low_angles(TetMesh& mesh, const OptimizeOptions& o, const BoundaryMod
   ao.angle_ceiling = std::min(150.0, q.max_angle);
   const bool guarded = o.polish_dt_guard || o.objective == "dt";
   if (guarded) ao.dt_floor = min_time_step(mesh);
-  ao.hausdorff = hausdorff;
+  ao.search.hausdorff = hausdorff;
   VolumeBudget trial = budget;
-  ao.volume_budget = &trial;
+  ao.search.volume_budget = &trial;
   const std::vector<double> before = mesh.xyz;
   const double nodal_before = guarded ? min_vertex_time_step(mesh) : 0;
   if (raise_min_angles(mesh, b, ao).nb_moved == 0) return;
