@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <random>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 #include "core/cvt/anderson.h"
@@ -13,7 +12,7 @@
 #include "core/delaunay/cdt2d_locate.h"
 #include "core/delaunay/cdt2d_remesh.h"
 #include "core/mesh/check_mesh.h"
-#include "core/mesh/face_key.h"
+#include "core/mesh/edge_index.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
@@ -50,13 +49,13 @@ class Lloyd2dProblem {
     for (int v : mesh.edges) on_edge[v] = 1;
     for (int v = 0; v < mesh.nb_vertices(); ++v)
       if (mesh.vclass[v].dim == 2 && !on_edge[v]) free_.push_back(v);
-    if (!sizing_.is_uniform()) density_ = [this](const double* x) { return sizing_.density(x); };
+    size_hint_.assign(free_.size(), -1);
   }
 
   // The CVT energy F of the current mesh (all cells).
   double energy() const {
     double e = 0;
-    for (const VoronoiCell2d& c : voronoi_centroids2d(mesh_, density_, sizing_.thread_safe()))
+    for (const VoronoiCell2d& c : voronoi_centroids2d(mesh_, sizing_, true, &delaunay_))
       e += c.energy;
     return e;
   }
@@ -71,7 +70,7 @@ class Lloyd2dProblem {
     std::vector<double> next(2 * n);
     for (std::size_t k = 0; k < n; ++k) {
       const double* z = mesh_.point(free_[k]);
-      const double r = amount * sizing_.size(z) * std::sqrt(uniform01(rng));
+      const double r = amount * sizing_.size(z, size_hint_[k]) * std::sqrt(uniform01(rng));
       const double a = 2 * M_PI * uniform01(rng);
       const double goal[2] = {z[0] + r * std::cos(a), z[1] + r * std::sin(a)};
       safe_target(free_[k], goal, &next[2 * k]);
@@ -80,7 +79,7 @@ class Lloyd2dProblem {
       double* p = mesh_.point(free_[k]);
       p[0] = next[2 * k], p[1] = next[2 * k + 1];
     }
-    cdt2d_remesh(mesh_);
+    cdt2d_remesh(mesh_, &delaunay_);
   }
 
   LloydStep step() {
@@ -88,8 +87,7 @@ class Lloyd2dProblem {
     LloydStep s;
     s.hop = hop_;
     s.nb_free = static_cast<int>(free_.size());
-    const std::vector<VoronoiCell2d> cells =
-        voronoi_centroids2d(mesh_, density_, sizing_.thread_safe());
+    const std::vector<VoronoiCell2d> cells = voronoi_centroids2d(mesh_, sizing_, true, &delaunay_);
     for (const VoronoiCell2d& c : cells) s.energy += c.energy;
     const std::size_t n = free_.size();
     std::vector<double> z(2 * n), c(2 * n);
@@ -97,7 +95,7 @@ class Lloyd2dProblem {
     for (std::size_t k = 0; k < n; ++k) {
       const int v = free_[k];
       const double* p = mesh_.point(v);
-      const double h = sizing_.size(p);
+      const double h = sizing_.size(p, size_hint_[k]);
       for (int d = 0; d < 2; ++d) z[2 * k + d] = p[d], c[2 * k + d] = cells[v].centroid[d];
       const double dx = c[2 * k] - z[2 * k], dy = c[2 * k + 1] - z[2 * k + 1];
       D += (dx * dx + dy * dy) / (h * h);  // the paper's D: the full move to the centroid
@@ -136,7 +134,7 @@ class Lloyd2dProblem {
       double* p = mesh_.point(free_[k]);
       p[0] = next[2 * k], p[1] = next[2 * k + 1];
     }
-    cdt2d_remesh(mesh_);
+    cdt2d_remesh(mesh_, &delaunay_);
     return s;
   }
 
@@ -152,7 +150,7 @@ class Lloyd2dProblem {
     const std::size_t n = free_.size();
     s.nb_free = static_cast<int>(n);
     if (!have_cells_) {  // a first point (the start, or after a plain Lloyd step)
-      cells_ = voronoi_centroids2d(mesh_, density_, sizing_.thread_safe()), have_cells_ = true;
+      cells_ = voronoi_centroids2d(mesh_, sizing_, true, &delaunay_), have_cells_ = true;
       lbfgs_.tell(lbfgs_point(cells_));
     }
     s.energy = lbfgs_.current().energy;
@@ -160,7 +158,7 @@ class Lloyd2dProblem {
     for (std::size_t k = 0; k < n; ++k) {
       const VoronoiCell2d& c = cells_[free_[k]];
       const double* p = mesh_.point(free_[k]);
-      const double h = sizing_.size(p);
+      const double h = sizing_.size(p, size_hint_[k]);
       const double dx = c.centroid[0] - p[0], dy = c.centroid[1] - p[1];
       D += (dx * dx + dy * dy) / (h * h);
     }
@@ -182,14 +180,13 @@ class Lloyd2dProblem {
           double* p = mesh_.point(free_[k]);
           p[0] = target[2 * k], p[1] = target[2 * k + 1];
         }
-        cdt2d_remesh(mesh_);
-        std::vector<VoronoiCell2d> trial =
-            voronoi_centroids2d(mesh_, density_, sizing_.thread_safe());
+        cdt2d_remesh(mesh_, &delaunay_);
+        std::vector<VoronoiCell2d> trial = voronoi_centroids2d(mesh_, sizing_, true, &delaunay_);
         verdict = lbfgs_.tell(lbfgs_point(trial));
         if (verdict == LbfgsVerdict::kAccepted)
           cells_ = std::move(trial);
         else
-          mesh_ = backup;
+          mesh_ = backup, delaunay_ = Cdt2dResult();
       }
       if (verdict == LbfgsVerdict::kAccepted) break;
       if (verdict == LbfgsVerdict::kExhausted) return plain_lloyd_step(s);
@@ -239,7 +236,7 @@ class Lloyd2dProblem {
       double* p = mesh_.point(free_[k]);
       p[0] = next[2 * k], p[1] = next[2 * k + 1];
     }
-    cdt2d_remesh(mesh_);
+    cdt2d_remesh(mesh_, &delaunay_);
     have_cells_ = false;
     return s;
   }
@@ -247,9 +244,7 @@ class Lloyd2dProblem {
   // Constrained slots and a triangle at each vertex of the current mesh, for safe_target.
   void prepare_safeguard() {
     const int nt = mesh_.nb_tris();
-    std::unordered_set<EdgeKey, EdgeKeyHash> ce;
-    for (int e = 0; e < mesh_.nb_edges(); ++e)
-      ce.insert(edge_key(mesh_.edges[2 * e], mesh_.edges[2 * e + 1]));
+    const EdgeIndex ce(mesh_.edges, mesh_.nb_vertices());
     stop_.assign(3 * static_cast<std::size_t>(nt), 0);
     vtri_.assign(mesh_.nb_vertices(), -1);
     for (int t = 0; t < nt; ++t) {
@@ -257,7 +252,7 @@ class Lloyd2dProblem {
       if (tv[0] < 0) continue;
       for (int k = 0; k < 3; ++k) {
         vtri_[tv[k]] = t;
-        stop_[3 * t + k] = ce.count(edge_key(tv[(k + 1) % 3], tv[(k + 2) % 3])) ? 1 : 0;
+        stop_[3 * t + k] = ce.contains(tv[(k + 1) % 3], tv[(k + 2) % 3]);
       }
     }
   }
@@ -288,10 +283,15 @@ class Lloyd2dProblem {
   }
 
   TriMesh2& mesh_;
+  // The unconstrained Delaunay triangulation of mesh_'s vertices, from the last rebuild
+  // (cdt2d_remesh), for the next cells; empty: computed by voronoi_centroids2d.
+  Cdt2dResult delaunay_;
   Lloyd2dOptions o_;
   const SizingField2d& sizing_;
-  std::function<double(const double*)> density_;
   std::vector<int> free_;
+  // Per free vertex, the background triangle of its last size lookup (SizingField2d::size's
+  // hint): a vertex moves little from one iteration to the next, so its walk is short.
+  std::vector<int> size_hint_;
   std::vector<char> stop_;
   std::vector<int> vtri_;
   AndersonMixer mixer_;

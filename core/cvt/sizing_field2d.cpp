@@ -87,7 +87,9 @@ SizingField2d::SizingField2d(const TriMesh2& mesh, const SizingField2dOptions& o
     throw std::invalid_argument("unknown sizing \"" + o.kind + "\" (uniform, function or mesh)");
   kind_ = Kind::kMesh;
   const TriMesh2& bg = o.background ? *o.background : mesh;
-  bg_xy_ = bg.xy;
+  const std::vector<double>& bg_xy_ = bg.xy;
+  std::vector<int> bg_tris_, bg_adj_;
+  std::vector<double> bg_h_;
   const int nv = bg.nb_vertices();
   std::vector<double> sum(nv, 0);
   std::vector<int> cnt(nv, 0);
@@ -174,9 +176,31 @@ SizingField2d::SizingField2d(const TriMesh2& mesh, const SizingField2dOptions& o
     for (int j = r[2]; j <= r[3]; ++j)
       for (int i = r[0]; i <= r[1]; ++i) bucket_tris_[fill[j * nx_ + i]++] = t;
   }
+  bg_.resize(nt);
+  for (int t = 0; t < nt; ++t) {
+    const int* tv = &bg_tris_[3 * t];
+    const double* a = &bg_xy_[2 * tv[0]];
+    const double* b = &bg_xy_[2 * tv[1]];
+    const double* d = &bg_xy_[2 * tv[2]];
+    BgTri& g = bg_[t];
+    g.a[0] = a[0], g.a[1] = a[1];
+    g.e1[0] = b[0] - a[0], g.e1[1] = b[1] - a[1];
+    g.e2[0] = d[0] - a[0], g.e2[1] = d[1] - a[1];
+    g.det = g.e1[0] * g.e2[1] - g.e1[1] * g.e2[0];
+    for (int k = 0; k < 3; ++k) g.h[k] = bg_h_[tv[k]], g.adj[k] = bg_adj_[3 * t + k];
+  }
 }
 
 double SizingField2d::size(const double* x) const {
+  // The quadrature points of one Voronoi piece lie close together: the walk starts from the
+  // background triangle that last held a point strictly inside (per thread).
+  thread_local const SizingField2d* hint_owner = nullptr;
+  thread_local int hint = -1;
+  if (hint_owner != this) hint_owner = this, hint = -1;
+  return size(x, hint);
+}
+
+double SizingField2d::size_scan(const double* x, int& hint) const {
   if (kind_ == Kind::kUniform) return h_;
   if (kind_ == Kind::kFunction) {
     const double h = function_(x);
@@ -186,46 +210,9 @@ double SizingField2d::size(const double* x) const {
     return h;
   }
   // P1 interpolation in the background triangle containing x (the best candidate of the
-  // nearest non-empty bucket ring if x is outside every triangle). The quadrature points of one
-  // Voronoi piece lie close together, so the triangle that last held a point strictly inside
-  // (per thread) is tried first; a point strictly inside one triangle is inside no other, so the
-  // early exits return the value the full scan would (the scan's best is that triangle).
-  thread_local const SizingField2d* hint_owner = nullptr;
-  thread_local int hint = -1;
-  const int nt = static_cast<int>(bg_tris_.size() / 3);
-  auto bary = [&](int t, double l[3]) {
-    const int* tv = &bg_tris_[3 * t];
-    const double* a = &bg_xy_[2 * tv[0]];
-    const double* b = &bg_xy_[2 * tv[1]];
-    const double* d = &bg_xy_[2 * tv[2]];
-    const double det = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-    if (det == 0) return false;
-    l[1] = ((x[0] - a[0]) * (d[1] - a[1]) - (x[1] - a[1]) * (d[0] - a[0])) / det;
-    l[2] = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / det;
-    l[0] = 1 - l[1] - l[2];
-    return true;
-  };
-  auto interpolate = [&](int t, double l0, double l1, double l2) {
-    const int* tv = &bg_tris_[3 * t];
-    l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
-    const double s = l0 + l1 + l2;
-    return (l0 * bg_h_[tv[0]] + l1 * bg_h_[tv[1]] + l2 * bg_h_[tv[2]]) / s;
-  };
-  if (hint_owner == this && hint >= 0 && hint < nt) {
-    // Walk from the hint towards x across the edge of the most negative barycentric coordinate
-    // (a few steps: the next quadrature point is near the last one).
-    int t = hint;
-    for (int step = 0; step < 8 && t >= 0; ++step) {
-      double l[3];
-      if (!bary(t, l)) break;
-      const int k = l[0] <= l[1] && l[0] <= l[2] ? 0 : l[1] <= l[2] ? 1 : 2;
-      if (l[k] > 0) {
-        hint = t;
-        return interpolate(t, l[0], l[1], l[2]);
-      }
-      t = bg_adj_[3 * t + k];
-    }
-  }
+  // nearest non-empty bucket ring if x is outside every triangle). A point strictly inside one
+  // triangle is inside no other, so size()'s walk returns the value this scan would (the scan's
+  // best is that triangle).
   const int ci = std::clamp(static_cast<int>((x[0] - lo_[0]) / cell_[0]), 0, nx_ - 1);
   const int cj = std::clamp(static_cast<int>((x[1] - lo_[1]) / cell_[1]), 0, ny_ - 1);
   double best = -std::numeric_limits<double>::infinity(), value = 0;
@@ -237,13 +224,13 @@ double SizingField2d::size(const double* x) const {
         for (int k = bucket_start_[c]; k < bucket_start_[c + 1]; ++k) {
           const int t = bucket_tris_[k];
           double l[3];
-          if (!bary(t, l)) continue;
+          if (!barycentric(t, x, l)) continue;
           const double m = std::min({l[0], l[1], l[2]});
           if (m <= best) continue;
           best = m;
-          value = interpolate(t, l[0], l[1], l[2]);
+          value = interpolate(t, l);
           if (m > 0) {
-            hint_owner = this, hint = t;
+            hint = t;
             return value;
           }
         }

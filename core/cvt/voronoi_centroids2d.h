@@ -4,6 +4,8 @@
 #include <functional>
 #include <vector>
 
+#include "core/cvt/sizing_field2d.h"
+#include "core/delaunay/cdt2d.h"
 #include "core/mesh/tri_mesh2.h"
 
 namespace cvtmesh {
@@ -24,8 +26,18 @@ struct VoronoiCell2d {
 // is a convex polygon. density == nullptr: rho = 1 and the integrals are exact; otherwise a
 // degree-4 quadrature on each piece. parallel: the cells are computed by several threads
 // (OpenMP), which may call density at the same time; the result is the same as serially.
+// delaunay: cdt2d(mesh.xy, {}) if the caller has it (cdt2d_remesh gives it), else nullptr (or a
+// result without triangles): computed here.
 std::vector<VoronoiCell2d> voronoi_centroids2d(
     const TriMesh2& mesh, const std::function<double(const double*)>& density = nullptr,
-    bool parallel = false);
+    bool parallel = false, const Cdt2dResult* delaunay = nullptr);
+
+// The same with rho = sizing.density(x) = 1 / H(x)^4 (sizing.is_uniform(): rho = 1, exact
+// integrals), the sizes looked up by each thread's own walk (SizingField2d::size(x, hint)): no
+// call through a std::function per quadrature point. parallel is ignored when the sizing is not
+// thread_safe(). The same cells as voronoi_centroids2d(mesh, density) with that density.
+std::vector<VoronoiCell2d> voronoi_centroids2d(const TriMesh2& mesh, const SizingField2d& sizing,
+                                               bool parallel,
+                                               const Cdt2dResult* delaunay = nullptr);
 
 }  // namespace cvtmesh

@@ -11,6 +11,7 @@
 
 #include "core/delaunay/cdt2d_locate.h"
 #include "core/geometry/predicates.h"
+#include "core/mesh/edge_index.h"
 #include "core/mesh/face_key.h"
 #include "core/mesh/tri_mesh2.h"
 #include "core/swap/flip2d.h"
@@ -99,9 +100,11 @@ class Builder {
       constrained_.insert(edge_key(a, b));
       out_segments_.insert(out_segments_.end(), {a, b});
     }
-    // Restore the Delaunay property away from the segments.
+    // Restore the Delaunay property away from the segments. Without a recovery flip the
+    // triangulation is the insertion's, Delaunay already (Lawson's flips leave every edge
+    // locally Delaunay): the pass would flip nothing.
     m_.edges = out_segments_;
-    flip2d_pass(m_);
+    if (recovery_flips_ > 0) flip2d_pass(m_);
   }
 
   Cdt2dResult finish() {
@@ -110,10 +113,11 @@ class Builder {
     r.nb_points = n_;
     r.component.assign(nt, -2);
     std::vector<char> cons(3 * static_cast<std::size_t>(nt), 0);
+    const EdgeIndex segments(out_segments_, m_.nb_vertices());  // the edges of constrained_
     for (int t = 0; t < nt; ++t)
       for (int e = 0; e < 3; ++e) {
         const int* tv = &m_.tris[3 * t];
-        cons[3 * t + e] = constrained_.count(edge_key(tv[(e + 1) % 3], tv[(e + 2) % 3])) ? 1 : 0;
+        cons[3 * t + e] = segments.contains(tv[(e + 1) % 3], tv[(e + 2) % 3]);
       }
     auto flood = [&](int seed, int id) {
       std::vector<int> stack{seed};
@@ -177,12 +181,15 @@ class Builder {
           std::to_string(p[0]) + ", " + std::to_string(p[1]) +
           "); e.g. a crack's duplicated nodes)");
     const int t = loc.tri;
-    std::vector<int> ring, outer, ids;
+    std::vector<int>& ring = ring_;
+    std::vector<int>& outer = outer_;
+    std::vector<int>& ids = ids_;
     if (loc.on_edge < 0) {
       const int a = m_.tris[3 * t], b = m_.tris[3 * t + 1], c = m_.tris[3 * t + 2];
       ring = {b, c, a};
       outer = {m_.adj[3 * t], m_.adj[3 * t + 1], m_.adj[3 * t + 2]};
-      ids = {t, new_tri(), new_tri()};
+      const int t1 = new_tri(), t2 = new_tri();
+      ids = {t, t1, t2};
     } else {
       const int e = loc.on_edge;
       const int o = m_.adj[3 * t + e];
@@ -193,11 +200,13 @@ class Builder {
       ring = {c, a, d, b};
       outer = {m_.adj[3 * t + (e + 2) % 3], m_.adj[3 * t2 + (e2 + 1) % 3],
                m_.adj[3 * t2 + (e2 + 2) % 3], m_.adj[3 * t + (e + 1) % 3]};
-      ids = {t, t2, new_tri(), new_tri()};
+      const int t3 = new_tri(), t4 = new_tri();
+      ids = {t, t2, t3, t4};
     }
     make_fan(v, ring, outer, ids);
     // Lawson flips: examine the edges opposite v.
-    std::vector<int> stack;
+    std::vector<int>& stack = stack_;
+    stack.clear();
     for (int t2 : ids) stack.push_back(3 * t2);
     while (!stack.empty()) {
       const int s = stack.back();
@@ -323,6 +332,7 @@ class Builder {
         crossing.push_back({u, w});
         continue;
       }
+      ++recovery_flips_;
       note_flip(t1, t2);
       const int c = m_.tris[3 * t1], d = m_.tris[3 * t1 + 2];
       if (edge_key(c, d) == edge_key(a, b)) continue;
@@ -338,6 +348,8 @@ class Builder {
   std::vector<int> vtri_;  // a triangle incident to each vertex
   std::unordered_set<EdgeKey, EdgeKeyHash> constrained_;
   std::vector<int> out_segments_;
+  long recovery_flips_ = 0;                      // flips made by recover_one
+  std::vector<int> ring_, outer_, ids_, stack_;  // insert()'s buffers (no allocation per point)
 };
 
 }  // namespace
@@ -348,6 +360,18 @@ Cdt2dResult cdt2d(const std::vector<double>& xy, const std::vector<int>& segment
   b.insert_all();
   b.recover(segments);
   return b.finish();
+}
+
+void cdt2d_and_delaunay(const std::vector<double>& xy, const std::vector<int>& segments,
+                        Cdt2dResult& constrained, Cdt2dResult& delaunay) {
+  if (xy.size() % 2 != 0) throw InputError("cdt2d: coordinate array has odd length");
+  Builder b(xy);
+  b.insert_all();
+  Builder u = b;  // the same insertion, then each recovers its own segments
+  u.recover({});
+  delaunay = u.finish();
+  b.recover(segments);
+  constrained = b.finish();
 }
 
 }  // namespace cvtmesh

@@ -26,4 +26,10 @@ struct Cdt2dResult {
 // two segments that cross.
 Cdt2dResult cdt2d(const std::vector<double>& xy, const std::vector<int>& segments);
 
+// cdt2d(xy, segments) and cdt2d(xy, {}) (the Delaunay triangulation of the points) from one
+// insertion of the points, which does not depend on the segments: the same two results as the
+// two calls. Throws as cdt2d.
+void cdt2d_and_delaunay(const std::vector<double>& xy, const std::vector<int>& segments,
+                        Cdt2dResult& constrained, Cdt2dResult& delaunay);
+
 }  // namespace cvtmesh

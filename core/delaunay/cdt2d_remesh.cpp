@@ -1,38 +1,28 @@
 #include "core/delaunay/cdt2d_remesh.h"
 
 #include <string>
-#include <unordered_map>
-#include <utility>
+#include <vector>
 
 #include "core/delaunay/cdt2d.h"
-#include "core/mesh/face_key.h"
+#include "core/mesh/edge_index.h"
 #include "core/util/error.h"
 
 namespace cvtmesh {
-namespace {
 
-struct DirectedKeyHash {
-  std::size_t operator()(const std::pair<int, int>& k) const {
-    return EdgeKeyHash()(EdgeKey{k.first, k.second});
-  }
-};
-
-}  // namespace
-
-void cdt2d_remesh(TriMesh2& mesh) {
-  // Surface on the left of each directed constrained edge (u -> v counter-clockwise in a triangle).
-  std::unordered_map<std::pair<int, int>, int, DirectedKeyHash> left;
-  {
-    std::unordered_map<EdgeKey, int, EdgeKeyHash> cons;
-    for (int e = 0; e < mesh.nb_edges(); ++e)
-      cons[edge_key(mesh.edges[2 * e], mesh.edges[2 * e + 1])] = e;
-    for (int t = 0; t < mesh.nb_tris(); ++t) {
-      const int* tv = &mesh.tris[3 * t];
-      if (tv[0] < 0) continue;
-      for (int k = 0; k < 3; ++k) {
-        const int u = tv[k], v = tv[(k + 1) % 3];
-        if (cons.count(edge_key(u, v))) left[{u, v}] = mesh.tri_region[t];
-      }
+void cdt2d_remesh(TriMesh2& mesh, Cdt2dResult* delaunay) {
+  if (delaunay) *delaunay = Cdt2dResult();
+  // Surface on the left of each directed constrained edge (u -> v counter-clockwise in a
+  // triangle): left[2 e] for edges[2 e] -> edges[2 e + 1], left[2 e + 1] the other way, e the
+  // first of the edges {u, v} (cons.find); -1 where no triangle is on that side.
+  const EdgeIndex cons(mesh.edges, mesh.nb_vertices());
+  std::vector<int> left(mesh.edges.size(), -1);
+  for (int t = 0; t < mesh.nb_tris(); ++t) {
+    const int* tv = &mesh.tris[3 * t];
+    if (tv[0] < 0) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int u = tv[k], v = tv[(k + 1) % 3];
+      const int e = cons.find(u, v);
+      if (e >= 0) left[2 * e + (mesh.edges[2 * e] == u ? 0 : 1)] = mesh.tri_region[t];
     }
   }
   // Only the vertices of the triangles and constrained edges: a hybrid or free-curve mesh's
@@ -54,7 +44,13 @@ void cdt2d_remesh(TriMesh2& mesh) {
     sub_edges.reserve(mesh.edges.size());
     for (int v : mesh.edges) sub_edges.push_back(local[v]);
   }
-  Cdt2dResult r = all ? cdt2d(mesh.xy, mesh.edges) : cdt2d(sub_xy, sub_edges);
+  Cdt2dResult r;
+  if (!all)
+    r = cdt2d(sub_xy, sub_edges);
+  else if (delaunay)
+    cdt2d_and_delaunay(mesh.xy, mesh.edges, r, *delaunay);
+  else
+    r = cdt2d(mesh.xy, mesh.edges);
   if (r.segments.size() != mesh.edges.size())
     throw InputError("cdt2d_remesh: a vertex lies on a constrained edge");
   if (!all) {
@@ -67,17 +63,15 @@ void cdt2d_remesh(TriMesh2& mesh) {
   // Surface of each enclosed part, from its constrained edges; -1 = hole.
   const int nt = static_cast<int>(r.tris.size() / 3);
   std::vector<int> part_region(r.nb_components, -2);
-  std::unordered_map<EdgeKey, int, EdgeKeyHash> is_seg;
-  for (std::size_t s = 0; 2 * s < r.segments.size(); ++s)
-    is_seg[edge_key(r.segments[2 * s], r.segments[2 * s + 1])] = 1;
+  const EdgeIndex is_seg(r.segments, static_cast<int>(r.xy.size() / 2) + (all ? 0 : nv));
   for (int t = 0; t < nt; ++t) {
     const int c = r.component[t];
     if (c < 0) continue;
     for (int k = 0; k < 3; ++k) {
       const int u = r.tris[3 * t + k], v = r.tris[3 * t + (k + 1) % 3];
-      if (!is_seg.count(edge_key(u, v))) continue;
-      const auto it = left.find({u, v});
-      const int reg = it == left.end() ? -1 : it->second;
+      if (!is_seg.contains(u, v)) continue;
+      const int e = cons.find(u, v);  // r.segments are mesh.edges (no split: checked above)
+      const int reg = e < 0 ? -1 : left[2 * e + (mesh.edges[2 * e] == u ? 0 : 1)];
       if (part_region[c] == -2) {
         part_region[c] = reg;
       } else if (part_region[c] != reg) {

@@ -1,6 +1,7 @@
 // Re-triangulates a planar mesh in place: the constrained Delaunay triangulation of its current
 // vertex positions, with its constrained edges (boundary and interfaces) and surfaces kept.
 #pragma once
+#include "core/delaunay/cdt2d.h"
 #include "core/mesh/tri_mesh2.h"
 
 namespace cvtmesh {
@@ -12,6 +13,9 @@ namespace cvtmesh {
 // The current mesh only needs correct connectivity next to its constrained edges: the vertices
 // may have moved. Throws InputError if a vertex lies on a constrained edge or the two sides of
 // one enclosed part disagree (a vertex crossed a constrained edge), and whatever cdt2d throws.
-void cdt2d_remesh(TriMesh2& mesh);
+// delaunay: if given, receives cdt2d(mesh.xy, {}) (the unconstrained Delaunay triangulation of
+// the new positions, from the same point insertion) when every vertex is in a triangle or on a
+// constrained edge; otherwise it is left empty (no triangles).
+void cdt2d_remesh(TriMesh2& mesh, Cdt2dResult* delaunay = nullptr);
 
 }  // namespace cvtmesh

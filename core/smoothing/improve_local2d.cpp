@@ -84,7 +84,10 @@ class VertexMover {
         for (int k = 0; k < 3; ++k) around_[fill[m_.tris[3 * t + k]]++] = t;
   }
 
-  StarMeasure measure(int v, const double* p) const {
+  // The star of v with v at p. bound: the measure a candidate must not fall below
+  // (acceptable()'s minima and maximum angle); the first triangle below it ends the measure,
+  // invalid (acceptable() would refuse it: the measure of an acceptable star is complete).
+  StarMeasure measure(int v, const double* p, const StarMeasure* bound = nullptr) const {
     StarMeasure s;
     for (int k = start_[v]; k < start_[v + 1]; ++k) {
       const int* tv = &m_.tris[3 * around_[k]];
@@ -92,9 +95,11 @@ class VertexMover {
       for (int j = 0; j < 3; ++j) x[j] = tv[j] == v ? p : m_.point(tv[j]);
       if (orient2d(x[0], x[1], x[2]) <= 0) return s;
       const double q = tri_quality(x[0], x[1], x[2], 2, Measure::kQ);
+      if (bound && q < bound->q_min) return s;
       s.q_min = std::min(s.q_min, q);
       s.q_sum += q;
       const auto [lo, hi] = tri_min_max_angle(x[0], x[1], x[2], 2);
+      if (bound && (lo < bound->a_min || hi > bound->a_max)) return s;
       s.a_min = std::min(s.a_min, lo);
       s.a_max = std::max(s.a_max, hi);
     }
@@ -144,7 +149,7 @@ class VertexMover {
     bool found = false;
     auto consider = [&](double x, double y) {
       const double q[2] = {x, y};
-      const StarMeasure s = measure(v, q);
+      const StarMeasure s = measure(v, q, &old);
       if (acceptable(s, old) && s.q_sum > best_s.q_sum) {
         best_s = s;
         best[0] = x;

@@ -1,9 +1,8 @@
 #include "core/swap/flip2d_pass.h"
 
-#include <unordered_set>
 #include <vector>
 
-#include "core/mesh/face_key.h"
+#include "core/mesh/edge_index.h"
 #include "core/swap/flip2d.h"
 #include "core/swap/flip2d_delaunay.h"
 #include "core/swap/flip2d_no_worse.h"
@@ -12,9 +11,7 @@
 namespace cvtmesh {
 
 long flip2d_pass(TriMesh2& mesh, const Flip2dPassOptions& options) {
-  std::unordered_set<EdgeKey, EdgeKeyHash> constrained;
-  for (int e = 0; e < mesh.nb_edges(); ++e)
-    constrained.insert(edge_key(mesh.edges[2 * e], mesh.edges[2 * e + 1]));
+  const EdgeIndex constrained(mesh.edges, mesh.nb_vertices());
   const int nt = mesh.nb_tris();
   const long cap = options.max_flips > 0 ? options.max_flips : 100L * nt + 100;
   const bool has_region = static_cast<int>(mesh.tri_region.size()) == nt;
@@ -33,7 +30,7 @@ long flip2d_pass(TriMesh2& mesh, const Flip2dPassOptions& options) {
     if (o < 0 || slot > o) continue;  // boundary, or examined from the other side
     const int t = slot / 3, e = slot % 3, t2 = o / 3;
     const int* tv = &mesh.tris[3 * t];
-    if (constrained.count(edge_key(tv[(e + 1) % 3], tv[(e + 2) % 3]))) continue;
+    if (constrained.contains(tv[(e + 1) % 3], tv[(e + 2) % 3])) continue;
     if (has_region && mesh.tri_region[t] != mesh.tri_region[t2]) continue;
     const bool wanted = options.criterion == FlipCriterion2d::kDelaunay
                             ? !is_locally_delaunay2d(mesh, slot)

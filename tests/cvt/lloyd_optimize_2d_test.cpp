@@ -8,12 +8,14 @@
 #include "core/cvt/lloyd_optimize_2d.h"
 #include "core/cvt/voronoi_centroids2d.h"
 #include "core/cvt/sizing_field2d.h"
+#include "core/delaunay/cdt2d.h"
 #include "core/geometry/tet_geometry.h"
 #include "core/io/read_mesh.h"
 #include "core/mesh/check_mesh.h"
 #include "core/pipeline/perturb2d.h"
 #include "core/quality/quality_stats.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/thread_counts.h"
 
 namespace cvtmesh {
 namespace {
@@ -303,6 +305,61 @@ TEST(Lloyd2d, MeshSizingCellsInParallelEqualSerialAndTheLookupIsP1) {
     }
   EXPECT_GT(inside, m.nb_tris());
   EXPECT_EQ(wrong, 0);
+}
+
+// The cells with the sizing given as a SizingField2d (each thread's own walk, no std::function
+// per quadrature point, the Delaunay triangulation given by the caller or not) are those with
+// the density rho = sizing.density(x) as a function, bit for bit, for 1, 2 and 3 threads; and
+// size(x, hint) is size(x) whatever the hint the walk starts from.
+TEST(Lloyd2d, SizingCellsEqualTheDensityFunctionsForAnyThreadCount) {
+  const MeshData d = read_mesh(testing::geo_path("washer.geo"), {.dim = 2});
+  TriMesh2 m = d.tri;
+  perturb_2d(m, {.kind = Perturbation2d::kCluster});
+  SizingField2dOptions so;
+  so.kind = "mesh";
+  so.background = &d.tri;
+  const SizingField2d sizing(m, so);
+  const auto want = voronoi_centroids2d(m, [&](const double* x) { return sizing.density(x); });
+  const Cdt2dResult del = cdt2d(m.xy, {});
+  const auto runs = testing::for_each_thread_count([&] {
+    std::vector<std::vector<VoronoiCell2d>> r;
+    r.push_back(voronoi_centroids2d(m, sizing, true));
+    r.push_back(voronoi_centroids2d(m, sizing, true, &del));
+    r.push_back(voronoi_centroids2d(m, sizing, false));
+    return r;
+  });
+  int differ = 0;
+  for (const auto& run : runs)
+    for (const auto& cells : run) {
+      ASSERT_EQ(cells.size(), want.size());
+      for (std::size_t i = 0; i < want.size(); ++i)
+        differ += cells[i].mass != want[i].mass || cells[i].energy != want[i].energy ||
+                  cells[i].centroid[0] != want[i].centroid[0] ||
+                  cells[i].centroid[1] != want[i].centroid[1];
+    }
+  EXPECT_EQ(differ, 0);
+  int wrong = 0;
+  const int nbg = d.tri.nb_tris();
+  for (int t = 0; t < m.nb_tris(); ++t) {
+    const int* tv = &m.tris[3 * t];
+    double x[2] = {0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 2; ++c) x[c] += m.point(tv[k])[c] / 3;
+    int hint = (t * 7919) % nbg;  // anywhere: a long walk, or the bucket scan
+    wrong += sizing.size(x, hint) != sizing.size(x);
+    int none = -1;
+    wrong += sizing.size(x, none) != sizing.size(x);
+  }
+  EXPECT_EQ(wrong, 0);
+  // A uniform sizing: rho = 1, the exact integrals of voronoi_centroids2d(m).
+  SizingField2dOptions uo;
+  uo.kind = "uniform";
+  const auto exact = voronoi_centroids2d(m);
+  const auto uniform = voronoi_centroids2d(m, SizingField2d(m, uo), true);
+  int udiffer = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i)
+    udiffer += exact[i].mass != uniform[i].mass || exact[i].centroid[0] != uniform[i].centroid[0];
+  EXPECT_EQ(udiffer, 0);
 }
 
 }  // namespace

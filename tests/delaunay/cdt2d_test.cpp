@@ -238,5 +238,61 @@ TEST(Cdt2dRemesh, WasherKeepsHoleAndBoundary) {
   EXPECT_EQ(nb_not_delaunay(m), 0);
 }
 
+// cdt2d_and_delaunay inserts the points once for both triangulations: each result is the one
+// of its own call (same triangles, numbering and adjacency), on random points with segments
+// that forces recovery flips and on a cocircular grid; and the Delaunay one is Delaunay.
+TEST(Cdt2d, OneInsertionGivesBothCallsResults) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<double> xy;
+    const bool grid = seed % 2 == 0;
+    for (int i = 0; i < 15; ++i)
+      for (int j = 0; j < 15; ++j)
+        if (grid)
+          xy.insert(xy.end(), {double(i), double(j)});
+        else
+          xy.insert(xy.end(), {u(rng), u(rng)});
+    // A long segment between two far points (through many triangles: recovered by flips; on
+    // the grid, split at the points on the diagonal).
+    const std::vector<int> one = {0, 224};
+    Cdt2dResult both_c, both_d;
+    cdt2d_and_delaunay(xy, one, both_c, both_d);
+    const Cdt2dResult c = cdt2d(xy, one), d = cdt2d(xy, {});
+    EXPECT_EQ(both_c.tris, c.tris);
+    EXPECT_EQ(both_c.adj, c.adj);
+    EXPECT_EQ(both_c.component, c.component);
+    EXPECT_EQ(both_c.segments, c.segments);
+    EXPECT_EQ(both_d.tris, d.tris);
+    EXPECT_EQ(both_d.adj, d.adj);
+    TriMesh2 m;
+    m.xy = d.xy;
+    m.tris = d.tris;
+    m.adj = d.adj;
+    int bad = 0;
+    for (int s = 0; s < static_cast<int>(m.tris.size()); ++s) bad += !is_locally_delaunay2d(m, s);
+    EXPECT_EQ(bad, 0) << "seed " << seed;
+  }
+}
+
+// cdt2d_remesh's Delaunay triangulation is cdt2d(mesh.xy, {}) of the rebuilt mesh's positions
+// (the quad: every vertex is in a triangle); the washer's arc centres are in none: no
+// triangulation of a subset is given as the whole set's.
+TEST(Cdt2dRemesh, GivesTheDelaunayTriangulationOfThePositions) {
+  MeshData d = read_mesh(testing::geo_path("quad.geo"), {.dim = 2});
+  TriMesh2& m = d.tri;
+  Cdt2dResult del;
+  cdt2d_remesh(m, &del);
+  const Cdt2dResult want = cdt2d(m.xy, {});
+  ASSERT_FALSE(del.tris.empty());
+  EXPECT_EQ(del.tris, want.tris);
+  EXPECT_EQ(del.adj, want.adj);
+  EXPECT_EQ(del.xy, want.xy);
+  MeshData w = read_mesh(testing::geo_path("washer.geo"), {.dim = 2});
+  del.tris = {0, 1, 2};
+  cdt2d_remesh(w.tri, &del);
+  EXPECT_TRUE(del.tris.empty());
+}
+
 }  // namespace
 }  // namespace cvtmesh
