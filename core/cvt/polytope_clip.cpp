@@ -57,7 +57,13 @@ void cap_by_angle(const std::vector<int>& on, const Vec3& n, Polytope& out) {
 bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Polytope& out) {
   const double nn = norm(n);
   if (nn == 0) return true;
-  const double tol = eps * nn;
+  bool changed = false;
+  return clip_polytope_tol(p, n, d, id, eps * nn, out, changed);
+}
+
+bool clip_polytope_tol(Polytope& p, const Vec3& n, double d, int id, double tol, Polytope& out,
+                       bool& changed) {
+  changed = false;
   const int nv = static_cast<int>(p.vtx.size());
   std::vector<double>& sd = out.sd;
   sd.resize(nv);
@@ -68,6 +74,7 @@ bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Pol
     any_in |= sd[i] < -tol;
   }
   if (!any_out) return true;
+  changed = true;
   if (!any_in) {
     p.clear();
     return false;
@@ -102,7 +109,7 @@ bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Pol
     const int b0 = p.face_start[f], m = p.face_start[f + 1] - b0;
     const std::size_t start = out.fv.size();
     for (int i = 0; i < m; ++i) {
-      const int a = p.fv[b0 + i], b = p.fv[b0 + (i + 1) % m];
+      const int a = p.fv[b0 + i], b = p.fv[i + 1 == m ? b0 : b0 + i + 1];
       if (remap[a] >= 0) out.fv.push_back(remap[a]);
       if ((sd[a] < -tol && sd[b] > tol) || (sd[a] > tol && sd[b] < -tol))
         out.fv.push_back(cut_vertex(a, b));
@@ -121,7 +128,7 @@ bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Pol
       continue;
     }
     for (int i = 0; i < k; ++i) {
-      const int u = out.fv[start + i], w = out.fv[start + (i + 1) % k];
+      const int u = out.fv[start + i], w = out.fv[i + 1 == k ? start : start + i + 1];
       if (next[u] == -2 || next[w] == -2) continue;
       if (next[w] >= 0 && next[w] != u) chain_ok = false;
       next[w] = u;

@@ -35,6 +35,11 @@ void tet_polytope(const double* p0, const double* p1, const double* p2, const do
 // Keeps the part {x : n.x <= d}; the new face gets `id`. `scratch` is a work buffer. Returns false
 // if nothing (of positive volume) is left. `eps`: points within eps of the plane count as on it.
 bool clip_polytope(Polytope& p, const Vec3& n, double d, int id, double eps, Polytope& scratch);
+// The same with the tolerance given as tol = eps * |n| (the clip of a Voronoi cell applies each
+// bisector to many pieces: its norm is taken once), and `changed` set to whether the polytope
+// changed (false: no vertex beyond the plane, the polytope kept as it was).
+bool clip_polytope_tol(Polytope& p, const Vec3& n, double d, int id, double tol, Polytope& scratch,
+                       bool& changed);
 
 // Moments relative to an origin z: m0 = volume, m1 = int (x - z), m2 = int (x - z)(x - z)^T.
 struct Moments {

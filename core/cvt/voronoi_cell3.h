@@ -12,8 +12,9 @@
 namespace cvtmesh {
 
 struct PlaneRef {
-  Vec3 n;    // unit normal
-  double h;  // distance of the plane from the cell's generator
+  Vec3 n;      // unit normal
+  double h;    // distance of the plane from the cell's generator
+  double tol;  // the clip's tolerance for this plane: CellMesh::eps * |n|
 };
 
 struct CellWorkspace {
@@ -22,6 +23,8 @@ struct CellWorkspace {
   std::vector<int> queue, generators, hit, reached;
   std::vector<int> mark;  // #T, stamp of the last vertex that visited the tet
   int stamp = 0;
+  std::vector<int> vmark;  // #V, stamp of the last list a vertex was added to (generators)
+  int vstamp = 0;
 };
 
 // Integrals over the restricted cell of v under a density rho that is linear in each tet of the
