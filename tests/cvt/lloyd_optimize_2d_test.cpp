@@ -251,29 +251,45 @@ TEST(Lloyd2d, BasinHoppingNeverEndsAboveLloydsEnergy) {
   EXPECT_EQ(again.xy, m.xy);
 }
 
+// The washer's Gmsh mesh d, its ClusPert perturbation m, and the "mesh" sizing with d as the
+// background (m and d share vertices but not positions).
+struct WasherClusPert {
+  WasherClusPert() : d(read_mesh(testing::geo_path("washer.geo"), {.dim = 2})), m(d.tri) {
+    perturb_2d(m, {.kind = Perturbation2d::kCluster});
+    sizing.kind = "mesh";
+    sizing.background = &d.tri;
+  }
+  WasherClusPert(const WasherClusPert&) = delete;  // sizing points into d
+  WasherClusPert& operator=(const WasherClusPert&) = delete;
+  MeshData d;
+  TriMesh2 m;
+  SizingField2dOptions sizing;
+};
+
+// How many cells differ from b's in mass, energy or centroid (bit for bit); a and b of one size.
+int cells_differing(const std::vector<VoronoiCell2d>& a, const std::vector<VoronoiCell2d>& b) {
+  int differ = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    differ += a[i].mass != b[i].mass || a[i].energy != b[i].energy ||
+              a[i].centroid[0] != b[i].centroid[0] || a[i].centroid[1] != b[i].centroid[1];
+  return differ;
+}
+
 // The washer's ClusPert mesh with its Gmsh mesh as the sizing reference ("mesh" sizing): the
 // cells computed by several threads are those of one thread, bit for bit; and the size at every
 // quadrature-like point (the walk from the last triangle found) is the P1 interpolation in the
 // background triangle that contains it, found here by brute force.
 TEST(Lloyd2d, MeshSizingCellsInParallelEqualSerialAndTheLookupIsP1) {
-  const MeshData d = read_mesh(testing::geo_path("washer.geo"), {.dim = 2});
-  TriMesh2 m = d.tri;
-  perturb_2d(m, {.kind = Perturbation2d::kCluster});
-  SizingField2dOptions so;
-  so.kind = "mesh";
-  so.background = &d.tri;
-  const SizingField2d sizing(m, so);
+  const WasherClusPert w;
+  const MeshData& d = w.d;
+  const TriMesh2& m = w.m;
+  const SizingField2d sizing(m, w.sizing);
   ASSERT_TRUE(sizing.thread_safe());
   const auto density = [&](const double* x) { return sizing.density(x); };
   const auto serial = voronoi_centroids2d(m, density, false);
   const auto parallel = voronoi_centroids2d(m, density, true);
   ASSERT_EQ(serial.size(), parallel.size());
-  int differ = 0;
-  for (std::size_t i = 0; i < serial.size(); ++i)
-    differ += serial[i].mass != parallel[i].mass || serial[i].energy != parallel[i].energy ||
-              serial[i].centroid[0] != parallel[i].centroid[0] ||
-              serial[i].centroid[1] != parallel[i].centroid[1];
-  EXPECT_EQ(differ, 0);
+  EXPECT_EQ(cells_differing(serial, parallel), 0);
   // Vertex sizes of the background as size() computes them are not exposed: compare with the
   // P1 interpolation of size() at the background's own vertices (exact at a vertex).
   const TriMesh2& bg = d.tri;
@@ -312,13 +328,10 @@ TEST(Lloyd2d, MeshSizingCellsInParallelEqualSerialAndTheLookupIsP1) {
 // the density rho = sizing.density(x) as a function, bit for bit, for 1, 2 and 3 threads; and
 // size(x, hint) is size(x) whatever the hint the walk starts from.
 TEST(Lloyd2d, SizingCellsEqualTheDensityFunctionsForAnyThreadCount) {
-  const MeshData d = read_mesh(testing::geo_path("washer.geo"), {.dim = 2});
-  TriMesh2 m = d.tri;
-  perturb_2d(m, {.kind = Perturbation2d::kCluster});
-  SizingField2dOptions so;
-  so.kind = "mesh";
-  so.background = &d.tri;
-  const SizingField2d sizing(m, so);
+  const WasherClusPert w;
+  const MeshData& d = w.d;
+  const TriMesh2& m = w.m;
+  const SizingField2d sizing(m, w.sizing);
   const auto want = voronoi_centroids2d(m, [&](const double* x) { return sizing.density(x); });
   const Cdt2dResult del = cdt2d(m.xy, {});
   const auto runs = testing::for_each_thread_count([&] {
@@ -332,10 +345,7 @@ TEST(Lloyd2d, SizingCellsEqualTheDensityFunctionsForAnyThreadCount) {
   for (const auto& run : runs)
     for (const auto& cells : run) {
       ASSERT_EQ(cells.size(), want.size());
-      for (std::size_t i = 0; i < want.size(); ++i)
-        differ += cells[i].mass != want[i].mass || cells[i].energy != want[i].energy ||
-                  cells[i].centroid[0] != want[i].centroid[0] ||
-                  cells[i].centroid[1] != want[i].centroid[1];
+      differ += cells_differing(cells, want);
     }
   EXPECT_EQ(differ, 0);
   int wrong = 0;
