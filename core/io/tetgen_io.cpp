@@ -51,6 +51,21 @@ int region_from_attribute(TextReader& in, double a) {
   return static_cast<int>(a);
 }
 
+// The index of record i (from 0) of a .node or .ele list: the first sets the numbering's base
+// (0 or 1), each next one must follow it. `what` names the records ("point", "element"),
+// `an_index` the value read ("a point index").
+void read_record_index(TextReader& in, const std::string& what, const std::string& an_index,
+                       long long i, long long& base) {
+  const long long idx = in.integer(an_index, 0, kMaxInt);
+  if (i == 0) {
+    if (idx > 1) in.fail("the first " + what + " index must be 0 or 1, got " + std::to_string(idx));
+    base = idx;
+  } else if (idx != base + i) {
+    in.fail(what + " index " + std::to_string(idx) + " out of sequence (expected " +
+            std::to_string(base + i) + ")");
+  }
+}
+
 }  // namespace
 
 TetgenFiles tetgen_files(const std::string& path, int dim) {
@@ -148,14 +163,7 @@ MeshData read_tetgen(const std::string& path) {
   coords.reserve(static_cast<std::size_t>(nv) * dim);
   long long base = 0;
   for (long long i = 0; i < nv; ++i) {
-    const long long idx = node.integer("a point index", 0, kMaxInt);
-    if (i == 0) {
-      if (idx > 1) node.fail("the first point index must be 0 or 1, got " + std::to_string(idx));
-      base = idx;
-    } else if (idx != base + i) {
-      node.fail("point index " + std::to_string(idx) + " out of sequence (expected " +
-                std::to_string(base + i) + ")");
-    }
+    read_record_index(node, "point", "a point index", i, base);
     for (int k = 0; k < dim; ++k) coords.push_back(node.real("a coordinate"));
     for (long long k = 0; k < nattr + nmark; ++k) node.real("a point attribute or marker", false);
   }
@@ -178,14 +186,7 @@ MeshData read_tetgen(const std::string& path) {
   cells.reserve(static_cast<std::size_t>(ne) * want);
   long long ebase = 0;
   for (long long i = 0; i < ne; ++i) {
-    const long long idx = ele.integer("an element index", 0, kMaxInt);
-    if (i == 0) {
-      if (idx > 1) ele.fail("the first element index must be 0 or 1, got " + std::to_string(idx));
-      ebase = idx;
-    } else if (idx != ebase + i) {
-      ele.fail("element index " + std::to_string(idx) + " out of sequence (expected " +
-               std::to_string(ebase + i) + ")");
-    }
+    read_record_index(ele, "element", "an element index", i, ebase);
     for (int k = 0; k < want; ++k)
       cells.push_back(static_cast<int>(ele.integer("a point index", base, base + nv - 1) - base));
     int r = 1;

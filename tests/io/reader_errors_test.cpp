@@ -131,6 +131,11 @@ TEST(ReaderErrors, TetGen) {
       {"trailing_garbage", s.node, s.ele + "7 1 2 3 4 1\n", "unexpected data"},
       {"huge_count", s.node, replace_once(s.ele, "\n6 4 ", "\n600000000 4 "), "too short"},
       {"dimension_4", replace_once(s.node, "\n8 3 ", "\n8 4 "), s.ele, "out of range"},
+      {"point_out_of_sequence", replace_once(s.node, "\n2 1 0 0", "\n5 1 0 0"), s.ele,
+       "point index 5 out of sequence"},
+      {"first_element_index_2", s.node,
+       replace_once(s.ele, first_tet, "2 " + a + " " + b + " " + c + " " + d2 + rest),
+       "the first element index must be 0 or 1, got 2"},
   };
   for (const Case& k : cases) {
     SCOPED_TRACE(k.name);
