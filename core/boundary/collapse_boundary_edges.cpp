@@ -136,20 +136,35 @@ std::vector<double> interior_spacing(const TetMesh& m, const VertexTets& star) {
   auto interior = [&](int x) {
     return x < static_cast<int>(m.vclass.size()) && m.vclass[x].dim == 3;
   };
-  // Each interior vertex's mean interior edge length (an edge counted once per tet holding it).
+  // The interior vertices of the boundary vertices' stars: the only ones whose mean is needed.
+  std::vector<char> needed(static_cast<std::size_t>(nv), 0);
+  for (int x = 0; x < nv; ++x) {
+    if (interior(x)) continue;
+    for (const int* t = star.begin_of(x); t != star.end_of(x); ++t)
+      for (int k = 0; k < 4; ++k) {
+        const int y = m.tets[4 * static_cast<std::size_t>(*t) + k];
+        if (interior(y)) needed[y] = 1;
+      }
+  }
+  // Each of those vertices' mean interior edge length (an edge counted once per tet holding it),
+  // in parallel: the sum over its star's tets in increasing order (VertexTets), each tet's edges
+  // in kTetEdge order -- the order of one pass over all tets, so the same sums bit for bit.
   std::vector<double> sum(nv, 0), count(nv, 0);
-  for (int t = 0; t < m.nb_tets(); ++t) {
-    const int* w = &m.tets[4 * static_cast<std::size_t>(t)];
-    if (w[0] < 0) continue;
-    for (const auto& e : kTetEdge) {
-      const int a = w[e[0]], b = w[e[1]];
-      if (!interior(a) || !interior(b)) continue;
-      const double l = std::sqrt(dist2(m.point(a), m.point(b)));
-      sum[a] += l, sum[b] += l;
-      count[a] += 1, count[b] += 1;
+#pragma omp parallel for schedule(dynamic, 256) if (nv > 4096)
+  for (int y = 0; y < nv; ++y) {
+    if (!needed[y]) continue;
+    for (const int* t = star.begin_of(y); t != star.end_of(y); ++t) {
+      const int* w = &m.tets[4 * static_cast<std::size_t>(*t)];
+      for (const auto& e : kTetEdge) {
+        const int a = w[e[0]], b = w[e[1]];
+        if ((a != y && b != y) || !interior(a) || !interior(b)) continue;
+        sum[y] += std::sqrt(dist2(m.point(a), m.point(b)));
+        count[y] += 1;
+      }
     }
   }
   std::vector<double> s(nv, 0);
+#pragma omp parallel for schedule(dynamic, 256) if (nv > 4096)
   for (int x = 0; x < nv; ++x) {
     if (interior(x)) continue;
     double total = 0, n = 0;

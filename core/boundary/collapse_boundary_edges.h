@@ -112,7 +112,9 @@ bool is_cap_vertex(const TetMesh& mesh, const BoundaryModel& model, const Vertex
 void compact_boundary_triangles(TetMesh& mesh);
 
 // #V: for each boundary vertex, the mean length of the interior edges (both ends of class dim 3)
-// at its interior neighbours; 0 where it has none (and for interior vertices).
+// at its interior neighbours; 0 where it has none (and for interior vertices). `star`:
+// vertex_tets(mesh), every vertex's (the neighbours' means are summed over their stars, in
+// parallel: the same values as one pass over the tets, for any number of threads).
 std::vector<double> interior_spacing(const TetMesh& mesh, const VertexTets& star);
 
 struct BoundaryCollapseStats {

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include <omp.h>
+
 #include "core/geometry/predicates.h"
 
 namespace cvtmesh {
@@ -164,23 +166,42 @@ std::vector<std::array<int, 2>> find_surface_intersections(const std::vector<dou
       for (std::int64_t j = idx(b[1], 1); j <= idx(b[4], 1); ++j)
         for (std::int64_t k = idx(b[2], 2); k <= idx(b[5], 2); ++k) grid[key(i, j, k)].push_back(f);
   }
-  std::vector<int> seen(nf, -1);
-  for (int f = 0; f < nf && static_cast<int>(pairs.size()) < max_pairs; ++f) {
-    const double* b = &box[6 * static_cast<std::size_t>(f)];
-    for (std::int64_t i = idx(b[0], 0); i <= idx(b[3], 0); ++i)
-      for (std::int64_t j = idx(b[1], 1); j <= idx(b[4], 1); ++j)
-        for (std::int64_t k = idx(b[2], 2); k <= idx(b[5], 2); ++k) {
-          auto it = grid.find(key(i, j, k));
-          if (it == grid.end()) continue;
-          for (int g : it->second) {
-            if (g <= f || seen[g] == f) continue;
-            seen[g] = f;
-            const double* c = &box[6 * static_cast<std::size_t>(g)];
-            bool overlap = true;
-            for (int d = 0; d < 3; ++d) overlap &= b[d] <= c[3 + d] && c[d] <= b[3 + d];
-            if (overlap && improper(xyz, &tris[3 * f], &tris[3 * g])) pairs.push_back({f, g});
+  // The pairs (f, g > f) of each triangle f, the triangles in chunks, those of a chunk in
+  // parallel (each f by one thread, its `seen` marks that thread's); the chunk's pairs then taken
+  // in f order while fewer than max_pairs are found before f: the pairs of the serial loop over f
+  // that stops there, for any number of threads.
+  constexpr int kChunk = 4096;
+  std::vector<std::vector<int>> seen_of(
+      static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+  std::vector<std::vector<std::array<int, 2>>> of(static_cast<std::size_t>(std::min(nf, kChunk)));
+  for (int begin = 0; begin < nf && static_cast<int>(pairs.size()) < max_pairs; begin += kChunk) {
+    const int end = std::min(nf, begin + kChunk);
+#pragma omp parallel for schedule(dynamic, 64) if (end - begin > 256)
+    for (int f = begin; f < end; ++f) {
+      std::vector<int>& seen = seen_of[static_cast<std::size_t>(omp_get_thread_num())];
+      if (seen.empty()) seen.assign(static_cast<std::size_t>(nf), -1);
+      std::vector<std::array<int, 2>>& mine = of[static_cast<std::size_t>(f - begin)];
+      mine.clear();
+      const double* b = &box[6 * static_cast<std::size_t>(f)];
+      for (std::int64_t i = idx(b[0], 0); i <= idx(b[3], 0); ++i)
+        for (std::int64_t j = idx(b[1], 1); j <= idx(b[4], 1); ++j)
+          for (std::int64_t k = idx(b[2], 2); k <= idx(b[5], 2); ++k) {
+            auto it = grid.find(key(i, j, k));
+            if (it == grid.end()) continue;
+            for (int g : it->second) {
+              if (g <= f || seen[g] == f) continue;
+              seen[g] = f;
+              const double* c = &box[6 * static_cast<std::size_t>(g)];
+              bool overlap = true;
+              for (int d = 0; d < 3; ++d) overlap &= b[d] <= c[3 + d] && c[d] <= b[3 + d];
+              if (overlap && improper(xyz, &tris[3 * f], &tris[3 * g])) mine.push_back({f, g});
+            }
           }
-        }
+    }
+    for (int f = begin; f < end && static_cast<int>(pairs.size()) < max_pairs; ++f) {
+      const auto& mine = of[static_cast<std::size_t>(f - begin)];
+      pairs.insert(pairs.end(), mine.begin(), mine.end());
+    }
   }
   std::sort(pairs.begin(), pairs.end());
   if (static_cast<int>(pairs.size()) > max_pairs) pairs.resize(max_pairs);

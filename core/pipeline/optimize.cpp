@@ -399,12 +399,13 @@ bool repair_worst_tets(TetMesh& mesh, const OptimizeOptions& o) {
 // (the input's 2.8e-4, Netgen's 1.15e-3). Only the user's input counts as the floor, so the
 // element step row never ends below the input's. Inside the runs it changed auto_refine's choice
 // (the plain run's Q_min rose and the refined ones were refused: the knight's average 0.7385 ->
-// 0.5967). True when the mesh changed.
+// 0.5967). True when the mesh changed. `q`: the mesh's quality_stats; `floor`: the input's
+// min_time_step (both taken once by the caller, which needs them too).
 constexpr int kFinalMeanCalls = 4;
 
-bool repair_q_min_tets(TetMesh& mesh, const OptimizeOptions& o, const TetMesh& input) {
+bool repair_q_min_tets(TetMesh& mesh, const OptimizeOptions& o, const QualityStats& q,
+                       double floor) {
   if (!o.polish_dt_guard || o.objective == "dt" || !o.polish_repair) return false;
-  const QualityStats q = quality_stats(mesh, "");
   RepairOptions ro;
   ro.q_below = std::min(kWorstRepairQ, kWorstRepairFactor * q.q_min);
   ro.angle_below = 0;
@@ -412,7 +413,6 @@ bool repair_q_min_tets(TetMesh& mesh, const OptimizeOptions& o, const TetMesh& i
   ro.angle_ceiling = 180;
   ro.every_placement = true;
   ro.dt_guard = polish_time_step_guard(mesh, o);
-  const double floor = min_time_step(input);
   if (!(floor < ro.dt_guard.floor)) return false;
   ro.dt_guard.floor = floor;
   const TetMesh before = mesh;
@@ -435,10 +435,18 @@ bool may_remove_surface_vertices(const TetMesh& mesh, const OptimizeOptions& o) 
 // of a free-boundary run aims at and the floor of its element steps.
 struct InputSteps {
   double nodal = 0, element = 0;
+  bool known = false;  // as a cache (optimize's runs of one input): filled
 };
 
 InputSteps input_steps(const TetMesh& input) {
-  return {min_vertex_time_step(input), min_time_step(input)};
+  return {min_vertex_time_step(input), min_time_step(input), true};
+}
+
+// `cache`'s steps of `input`, computed on the first call (nullptr: computed each time).
+InputSteps input_steps(const TetMesh& input, InputSteps* cache) {
+  if (!cache) return input_steps(input);
+  if (!cache->known) *cache = input_steps(input);
+  return *cache;
 }
 
 // The last stage of a free-boundary run (issue 17): the vertices whose nodal time step
@@ -1035,10 +1043,14 @@ void drop_removed_vertices(TetMesh& mesh, const TetMesh& input) {
 // moves the vertices around the elements short of it back to their input positions
 // (restore_worse_regions; `restored` says what happened); verifies (on the coordinates as they
 // will be read back: every tet must stay positive once all of them are rounded). Returns the
-// mesh, or throws.
+// mesh, or throws. `steps`: the input's time steps, computed once for all runs of one input
+// (input_steps). `stats`, if given: set to the returned mesh's quality_stats(mesh, "") where this
+// took them (the check against `ref`) and the mesh did not change after, reset otherwise.
 TetMesh run_method3(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
                     OptimizeResult& r, const QualityStats* ref = nullptr,
-                    RestoreNote* restored = nullptr, FirstLloyd* first = nullptr) {
+                    RestoreNote* restored = nullptr, FirstLloyd* first = nullptr,
+                    InputSteps* steps = nullptr, std::optional<QualityStats>* stats = nullptr) {
+  if (stats) stats->reset();
   TetMesh mesh = input;
   pin_vertices(mesh);
   if (o.refine_interior > 0 && rebuilds_tetrahedralization(method)) {
@@ -1052,7 +1064,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   std::optional<BoundaryModel> b;
   if (free_boundary) {
     b = boundary_model(mesh, o);
-    run_cvdt_swap_smooth_free3(mesh, o, *b, input_steps(input), r,
+    run_cvdt_swap_smooth_free3(mesh, o, *b, input_steps(input, steps), r,
                                o.refine_interior > 0 ? nullptr : first);
     // Where the moved surface crosses itself, its vertices there go back to the input surface
     // (the check at the end fails the method if that was not enough).
@@ -1079,11 +1091,16 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   }
   // Before the classes are restored: a pinned vertex (of a kept non-tet element, periodic) is
   // not interior for restore_worse_regions, which moves it only back to where it is.
+  std::optional<QualityStats> got;  // the mesh's quality_stats while it does not change
   if (ref) {
-    std::string worse = worse_than(quality_stats(mesh, ""), *ref);
-    if (!worse.empty() && repair_to_reference(mesh, *ref, o))
-      worse = worse_than(quality_stats(mesh, ""), *ref);
+    got = quality_stats(mesh, "");
+    std::string worse = worse_than(*got, *ref);
+    if (!worse.empty() && repair_to_reference(mesh, *ref, o)) {
+      got = quality_stats(mesh, "");
+      worse = worse_than(*got, *ref);
+    }
     if (!worse.empty()) {
+      got.reset();
       RestoreOptions ro;
       ro.digits = o.output_digits;
       RestoreNote note{worse, restore_worse_regions(mesh, input, *ref, ro)};
@@ -1104,6 +1121,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   if (o.verify) report_start(o, "verify");
   if (!free_boundary) {
     if (o.verify) verify_optimized(input, mesh);
+    if (stats) *stats = got;
     return mesh;
   }
   VerifyOptions vo;
@@ -1125,6 +1143,7 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
     const RestoreHausdorffStats rh =
         restore_hausdorff_vertices(mesh, input, *b->geometry, 0.95 * ft.hausdorff);
     if (rh.nb_restored == 0) throw;
+    got.reset();
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "the free boundary ended %.3g from the input boundary (bound %.3g): %ld "
@@ -1151,6 +1170,8 @@ TetMesh run_method3(const TetMesh& input, const std::string& method, const Optim
   r.tri_q_min_before = fr.tri_q_min_before;
   r.tri_q_min_after = fr.tri_q_min_after;
   if (r.nb_boundary_removed > 0) drop_removed_vertices(mesh, input);
+  // The renumbering keeps each tet's points and the tets' order: the same statistics.
+  if (stats) *stats = got;
   return mesh;
 }
 
@@ -1453,12 +1474,14 @@ struct Variant {
 
 Variant try_variant(const TetMesh& input, const std::string& method, const OptimizeOptions& o,
                     const QualityStats& before, const QualityStats* ref,
-                    const RowTolerance& tol = {}, FirstLloyd* first = nullptr) {
+                    const RowTolerance& tol = {}, FirstLloyd* first = nullptr,
+                    InputSteps* steps = nullptr) {
   Variant v;
   v.result.method = method;
   try {
-    v.mesh = run_method3(input, method, o, v.result, ref, &v.rn, first);
-    v.stats = quality_stats(v.mesh, "");
+    std::optional<QualityStats> got;
+    v.mesh = run_method3(input, method, o, v.result, ref, &v.rn, first, steps, &got);
+    v.stats = got ? *got : quality_stats(v.mesh, "");
     v.worse = worse_than(v.stats, before, tol);
   } catch (const InvariantError& e) {
     v.error = e.what();
@@ -1494,11 +1517,13 @@ constexpr double kTargetAverage = 0.85, kTargetQmin = 0.40;
 // tried while the result in hand misses the targets; after a kept 1.2 run, the 1.1 run, judged
 // the same way against the 1.2 run's result.
 // `t0`: when optimize() started; o.time_budget bounds the whole (a refined run is not started
-// when one more run at the pace so far would end past it).
+// when one more run at the pace so far would end past it). `stats`: data.tet's quality_stats
+// if known (taken here otherwise), kept those of data.tet on return.
 void try_refined(const TetMesh& input, const std::string& method, const OptimizeOptions& kept,
                  const QualityStats* ref, std::chrono::steady_clock::time_point t0, MeshData& data,
-                 OptimizeResult& r) {
-  const QualityStats plain = quality_stats(data.tet, "");
+                 OptimizeResult& r, InputSteps* steps, std::optional<QualityStats>& stats) {
+  if (!stats) stats = quality_stats(data.tet, "");
+  const QualityStats plain = *stats;
   QualityStats now = plain;
   bool refined_kept = false;
   // The notes of the run in hand before any variant, and the decisions on the variants so far:
@@ -1537,7 +1562,7 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
     ro.refine_interior = bound;
     const RowTolerance& tol = kAutoRefineTolerance;
     const QualityStats& judge = last ? now : plain;
-    Variant v = try_variant(input, method, ro, judge, ref, tol);
+    Variant v = try_variant(input, method, ro, judge, ref, tol, nullptr, steps);
     if (!v.kept() && v.error.empty() && better_on_balance(v.stats, judge, tol)) v.worse.clear();
     // Never below the input on any row.
     if (v.kept() && ref) {
@@ -1573,6 +1598,7 @@ void try_refined(const TetMesh& input, const std::string& method, const Optimize
     r.notes = base_notes;
     r.notes.insert(r.notes.end(), decisions.begin(), decisions.end());
     adopt_variant(v, method, buf, data, r);
+    stats = q;
     decisions.push_back(buf);
     now = q;
     refined_kept = true;
@@ -1668,11 +1694,16 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   FirstLloyd first;
   first.record = o.never_worse && !o.fix_boundary && method == "cvdt+swap+smooth" &&
                  may_remove_surface_vertices(input, oo);
+  // The input's time steps, taken once for all the runs below (input_steps); data.tet's
+  // quality_stats(data.tet, "") while known (each pass over all tets taken once).
+  InputSteps steps;
+  std::optional<QualityStats> stats;
   try {
     RestoreNote rn;
-    data.tet = run_method3(input, method, oo, r, ref, &rn, &first);
+    data.tet = run_method3(input, method, oo, r, ref, &rn, &first, &steps, &stats);
     if (o.never_worse) {
-      const std::string worse = worse_than(quality_stats(data.tet, ""), r.before);
+      if (!stats) stats = quality_stats(data.tet, "");
+      const std::string worse = worse_than(*stats, r.before);
       if (!worse.empty())
         failure = "'" + method + "' made the mesh worse (" + worse + ")" + restore_failed(rn);
       else if (!rn.worse.empty())
@@ -1690,9 +1721,10 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     OptimizeOptions no = oo;
     no.coarsen_surface = 0;
     first.record = false;
-    Variant v = try_variant(input, method, no, r.before, ref, {}, &first);
+    Variant v = try_variant(input, method, no, r.before, ref, {}, &first, &steps);
     if (v.kept()) {
       kept = no;
+      stats = v.stats;
       adopt_variant(v, method,
                     failure + "; '" + method + "' without the surface coarsening is kept instead",
                     data, r);
@@ -1712,9 +1744,10 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     failure.clear();
     OptimizeOptions fo = oo;
     fo.fix_boundary = true;
-    Variant v = try_variant(input, method, fo, r.before, ref);
+    Variant v = try_variant(input, method, fo, r.before, ref, {}, nullptr, &steps);
     if (v.kept()) {
       kept = fo;
+      stats = v.stats;
       if (!v.rn.worse.empty()) r.notes.push_back(restore_succeeded(method, v.rn, r));
       r.notes.push_back("'" + method + "' with the boundary fixed is kept instead");
       data.tet = std::move(v.mesh);
@@ -1733,6 +1766,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
   if (!failure.empty()) {
     r.notes.push_back(failure);
     data.tet = input;
+    stats.reset();
     // The polish alone on the input, then its gentlest form (smoothing only: no flips, no
     // sliver repair, which may raise the maximum dihedral angle), the first not worse is kept.
     bool polished = false;
@@ -1794,7 +1828,7 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     r.method = method;
     if (o.auto_refine && o.refine_interior == 0 && method == "cvdt+swap+smooth" &&
         input.nb_tets() <= o.auto_refine_max_tets)
-      try_refined(input, method, kept, ref, t0, data, r);
+      try_refined(input, method, kept, ref, t0, data, r, &steps, stats);
     // The kept run's worst tets under the input's time-step floor (repair_q_min_tets), then the
     // interior average smoothing until it moves nothing (kFinalMeanCalls calls at most: one
     // left the knight's average 1.2e-4 below the run's; its guards keep the other rows); the
@@ -1802,13 +1836,17 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
     // worse (docs/reproduction.md, "The knight's cap under the input's time step").
     if (method == "cvdt+swap+smooth" && !kept.fix_boundary) {
       const TetMesh before = data.tet;
-      const QualityStats was = quality_stats(before, "");
-      if (repair_q_min_tets(data.tet, kept, input)) {
+      if (!stats) stats = quality_stats(before, "");
+      const QualityStats was = *stats;
+      const double floor = steps.known ? steps.element : min_time_step(input);
+      if (repair_q_min_tets(data.tet, kept, was, floor)) {
         const double q_min = quality_stats(data.tet, "").q_min;
         for (int i = 0; i < kFinalMeanCalls; ++i)
           if (smooth_interior_mean_quality(data.tet, kept).nb_moved == 0) break;
-        if (quality_stats(data.tet, "").q_avg < was.q_avg) {
+        stats = quality_stats(data.tet, "");
+        if (stats->q_avg < was.q_avg) {
           data.tet = before;
+          stats = was;
         } else {
           r.notes.push_back(
               "the worst tets repaired once more with the input's smallest element time step as "
@@ -1819,7 +1857,12 @@ OptimizeResult optimize(MeshData& data, const OptimizeOptions& options) {
       }
     }
   }
-  r.after = quality_stats(data.tet, r.method);
+  if (stats) {
+    r.after = *stats;
+    r.after.label = r.method;
+  } else {
+    r.after = quality_stats(data.tet, r.method);
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

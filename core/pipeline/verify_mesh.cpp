@@ -18,6 +18,7 @@
 #include "core/mesh/face_key.h"
 #include "core/mesh/find_surface_intersections.h"
 #include "core/util/error.h"
+#include "core/util/on_both.h"
 
 namespace cvtmesh {
 namespace {
@@ -311,8 +312,9 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
       if (per_surface(before) != per_surface(after))
         throw InvariantError("a surface lost or gained triangles or vertices");
     } else {
-      const auto sb = per_surface(before), sa = per_surface(after);
-      const auto tb = surface_topology(before), ta = surface_topology(after);
+      // The passes over the mesh before and after on two threads (on_both), both serial.
+      const auto [sb, sa] = on_both(before, after, per_surface);
+      const auto [tb, ta] = on_both(before, after, surface_topology);
       if (sb.size() != sa.size()) throw InvariantError("a surface disappeared or appeared");
       for (const auto& [tag, e] : sb) {
         const auto it = sa.find(tag);
@@ -337,7 +339,7 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
   }
   check_new_vertices(before, after);
   // Region volumes conserved.
-  const auto vb = region_volumes(before), va = region_volumes(after);
+  const auto [vb, va] = on_both(before, after, region_volumes);
   if (vb.size() != va.size()) throw InvariantError("a region disappeared or appeared");
   for (std::size_t i = 0; i < vb.size(); ++i) {
     if (vb[i].first != va[i].first) throw InvariantError("region tags changed");
@@ -369,8 +371,9 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
         }
         return count;
       };
+      const auto [cb, ca] = on_both(before, after, tags_of);
       if (!options.boundary_collapses) {
-        if (tags_of(before) != tags_of(after))
+        if (cb != ca)
           throw InvariantError(group_name(g) + " is no longer bounded by the same surfaces");
         continue;
       }
@@ -380,7 +383,6 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
         for (int f = 0; f < m.nb_tris(); ++f) ++n[m.tri_surface[f]];
         return n;
       };
-      const auto cb = tags_of(before), ca = tags_of(after);
       const auto nb = nb_tris(before), na = nb_tris(after);
       bool same = cb.size() == ca.size();
       for (const auto& [tag, n] : cb) {
@@ -394,7 +396,7 @@ void verify_optimized(const TetMesh& before, const TetMesh& after, const VerifyO
   // A surface whose triangles all turned one way around the volume (a Gmsh file's outward or
   // inward normals) still does, the same way: the surface flips rewrite triangles.
   {
-    const auto sb = surface_senses(before), sa = surface_senses(after);
+    const auto [sb, sa] = on_both(before, after, surface_senses);
     for (const auto& [tag, n] : sb) {
       const auto it = sa.find(tag);
       if (it == sa.end() || (n[0] > 0 && n[1] > 0)) continue;
