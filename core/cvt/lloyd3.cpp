@@ -1,8 +1,6 @@
 #include "core/cvt/lloyd3.h"
 
-#include <algorithm>
 #include <chrono>
-#include <functional>
 #include <memory>
 
 #include "core/cvt/lloyd3_anderson.h"
@@ -43,7 +41,6 @@ class Lloyd3Problem {
     else
       sizing_ = std::shared_ptr<const SizingField3>(make_mesh_sizing3(mesh).release());
     cells_.hints.assign(m_.nb_vertices(), -1);
-    cells_.density_ready = false;
   }
 
   LloydStep step() {
@@ -52,14 +49,6 @@ class Lloyd3Problem {
     // Tets in space order: the per-tet and per-star passes of the cells then hit the cache
     // (flips scatter new tets over free slots; every few iterations is enough; sorted on entry).
     if (++iteration_ % 4 == 0) sort_tets_spatially(m_);
-    if (next_density_ready_) {
-      // The sizing field at the current coordinates, evaluated beside the last flips (move_to).
-      cells_.hints.swap(next_hints_);
-      cells_.H.swap(next_H_);
-      cells_.rho.swap(next_rho_);
-      cells_.density_ready = true;
-      next_density_ready_ = false;
-    }
     const Lloyd3Cells e =
         lloyd3_cells(m_, *sizing_, o_.compute_energy, faces_listed_, cells_, s, &non_delaunay_);
     s.seconds_cells = seconds_since(t0);
@@ -86,32 +75,10 @@ class Lloyd3Problem {
   // Moves the vertices to `target` and re-triangulates (flips, or a rebuild), then checks: the
   // whole structure every 4th iteration, after a rebuild and at the end; the orientation of
   // every tet after every move.
-  //
-  // The re-insertion's first flips are serial: beside them, a second thread evaluates the sizing
-  // field at the coordinates they leave (into next_*, from the hints of this iteration), for the
-  // next iteration's cells. Only the vertices that move after them are evaluated again (from the
-  // same hints): the same values as evaluating every vertex at the start of the next iteration.
-  // Not used after a rebuild (the coordinates are then the targets), nor with a sizing field
-  // that is not thread-safe, nor while some vertex has no hint yet.
   void move_to(const std::vector<double>& target, LloydStep& s) {
     const auto t1 = Clock::now();
-    next_density_ready_ = false;
-    bool evaluated = false;
-    std::function<void()> alongside;
-    if (sizing_->thread_safe() && std::find_if(cells_.hints.begin(), cells_.hints.end(),
-                                               [](int h) { return h < 0; }) == cells_.hints.end())
-      alongside = [&] {
-        next_hints_ = cells_.hints;
-        lloyd3_density(m_, *sizing_, next_hints_, next_H_, next_rho_);
-        evaluated = true;
-      };
     const Reinsertion r = reinsert_vertices3(m_, constrained_set_, target, o_.local_flips,
-                                             o_.max_flip_leftover, *delaunay_, s, alongside);
-    if (evaluated && !s.rebuilt) {
-      for (int v : r.moved_late) next_hints_[v] = cells_.hints[v];
-      lloyd3_density_of(m_, *sizing_, r.moved_late, next_hints_, next_H_, next_rho_);
-      next_density_ready_ = true;
-    }
+                                             o_.max_flip_leftover, *delaunay_, s);
     faces_listed_ = r.faces_listed;
     non_delaunay_ = r.non_delaunay_faces;
     nb_steiner_ += r.nb_steiner;
@@ -140,10 +107,6 @@ class Lloyd3Problem {
   bool faces_listed_ = false;
   std::vector<FaceKey> non_delaunay_;
   bool last_check_full_ = true;
-  // The sizing field at the current coordinates for the next iteration (move_to).
-  std::vector<int> next_hints_;
-  std::vector<double> next_H_, next_rho_;
-  bool next_density_ready_ = false;
   int iteration_ = 0;
   int nb_steiner_ = 0;
 };

@@ -8,18 +8,8 @@
 namespace cvtmesh {
 namespace {
 
-// H and rho = 1/H^5 at vertex v, found from hints[v].
-inline void density_at(const TetMesh& m, const SizingField3& sizing, int v, std::vector<int>& hints,
-                       std::vector<double>& H, std::vector<double>& rho) {
-  double g[3];
-  H[v] = sizing.eval(m.point(v), g, &hints[v]);
-  rho[v] = 1.0 / std::pow(H[v], 5);
-}
-
-}  // namespace
-
 // rho = 1/H^5 at every vertex of the mesh (P1 density for the cells); H at every vertex too.
-void lloyd3_density(const TetMesh& m, const SizingField3& sizing, std::vector<int>& hints,
+void vertex_density(const TetMesh& m, const SizingField3& sizing, std::vector<int>& hints,
                     std::vector<double>& H, std::vector<double>& rho) {
   const int nv = m.nb_vertices();
   hints.resize(nv, -1);
@@ -27,18 +17,16 @@ void lloyd3_density(const TetMesh& m, const SizingField3& sizing, std::vector<in
   rho.resize(nv);
 #pragma omp parallel for schedule(static, 512) if (sizing.thread_safe())
   for (int v = 0; v < nv; ++v) {
+    double g[3];
     // No hint yet (first call): start from where the previous vertex of this chunk was found —
     // vertices are in space order, so the walk is short (same chunks for any thread count).
     if (hints[v] < 0 && v % 512 != 0) hints[v] = hints[v - 1];
-    density_at(m, sizing, v, hints, H, rho);
+    H[v] = sizing.eval(m.point(v), g, &hints[v]);
+    rho[v] = 1.0 / std::pow(H[v], 5);
   }
 }
 
-void lloyd3_density_of(const TetMesh& m, const SizingField3& sizing,
-                       const std::vector<int>& vertices, std::vector<int>& hints,
-                       std::vector<double>& H, std::vector<double>& rho) {
-  for (int v : vertices) density_at(m, sizing, v, hints, H, rho);
-}
+}  // namespace
 
 CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
                                    std::vector<int>* hints) {
@@ -55,8 +43,7 @@ CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizi
   const int nv = mesh.nb_vertices();
   c.centroid.assign(3 * static_cast<std::size_t>(nv), 0);
   c.mass.assign(nv, 0);
-  lloyd3_density(mesh, sizing, b.hints, b.H, b.rho);
-  b.density_ready = false;
+  vertex_density(mesh, sizing, b.hints, b.H, b.rho);
   const std::vector<double>& rho = b.rho;
   prepare_cell_mesh(mesh, &rho, false, b.cm);
   const CellMesh& cm = b.cm;
@@ -89,8 +76,7 @@ Lloyd3Cells lloyd3_cells(const TetMesh& m, const SizingField3& sizing, bool comp
                          bool delaunay_known, Lloyd3CellBuffers& b, LloydStep& s,
                          const std::vector<FaceKey>* non_delaunay) {
   const int nv = m.nb_vertices();
-  if (!b.density_ready) lloyd3_density(m, sizing, b.hints, b.H, b.rho);
-  b.density_ready = false;
+  vertex_density(m, sizing, b.hints, b.H, b.rho);
   prepare_cell_mesh(m, &b.rho, delaunay_known, b.cm, non_delaunay);
   const VertexStar& star = b.cm.star;
   // Written for every wanted vertex below, read only for those.

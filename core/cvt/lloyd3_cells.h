@@ -35,20 +35,7 @@ struct Lloyd3CellBuffers {
   std::vector<int> hints;            // #V: where the sizing field found each vertex last time
   std::vector<double> H, rho;        // #V: size and density at the vertices
   std::vector<CellIntegrals> cells;  // #V: the cells of the last evaluation (lloyd3_cells)
-  // hints, H and rho are already those of the current coordinates (evaluated by the Lloyd loop
-  // beside the re-insertion's flips): the next lloyd3_cells uses them and clears the flag.
-  bool density_ready = false;
 };
-
-// H (the sizing field) and rho = 1/H^5 at every vertex, each found from its hint (updated);
-// parallel when the sizing field is thread-safe, the same values for any number of threads.
-void lloyd3_density(const TetMesh& mesh, const SizingField3& sizing, std::vector<int>& hints,
-                    std::vector<double>& H, std::vector<double>& rho);
-// The same at the vertices `vertices` only, in that order (hints, H and rho already sized #V): the
-// values lloyd3_density gives them when every hint is >= 0.
-void lloyd3_density_of(const TetMesh& mesh, const SizingField3& sizing,
-                       const std::vector<int>& vertices, std::vector<int>& hints,
-                       std::vector<double>& H, std::vector<double>& rho);
 
 CellCentroids voronoi_centroids_3d(const TetMesh& mesh, const SizingField3& sizing,
                                    std::vector<int>* sizing_hints = nullptr);

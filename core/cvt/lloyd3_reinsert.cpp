@@ -6,17 +6,14 @@ namespace cvtmesh {
 
 Reinsertion reinsert_vertices3(TetMesh& m, const ConstrainedFaces& constrained,
                                const std::vector<double>& target, bool local_flips,
-                               double max_flip_leftover, Delaunay3& backend, LloydStep& s,
-                               const std::function<void()>& alongside) {
+                               double max_flip_leftover, Delaunay3& backend, LloydStep& s) {
   const int nv = m.nb_vertices();
   bool restored = false;
   bool delaunay = false;
   std::vector<FaceKey> stuck;
-  std::vector<int> moved_late;
   if (local_flips) {
-    RelocateStats rs = relocate_vertices(m, constrained, target, 4, alongside);
+    RelocateStats rs = relocate_vertices(m, constrained, target);
     stuck = std::move(rs.stuck_faces);
-    moved_late = std::move(rs.moved_late);
     s.nb_flips = rs.nb_flips;
     s.nb_stuck_faces = rs.nb_stuck;
     s.nb_short_moves = rs.nb_pending;
@@ -32,10 +29,7 @@ Reinsertion reinsert_vertices3(TetMesh& m, const ConstrainedFaces& constrained,
   Reinsertion r;
   r.delaunay = delaunay;
   r.faces_listed = restored;
-  if (restored) {
-    r.non_delaunay_faces = std::move(stuck);
-    r.moved_late = std::move(moved_late);
-  }
+  if (restored) r.non_delaunay_faces = std::move(stuck);
   if (!restored) {
     m.xyz = target;
     r.nb_steiner = backend.retetrahedralize(m).nb_steiner;

@@ -3,7 +3,6 @@
 // mesh (relocate_vertices3.h), or the constrained Delaunay mesh of the targets is rebuilt by the
 // backend when the flips leave too many vertices short of their targets (or are off).
 #pragma once
-#include <functional>
 #include <vector>
 
 #include "core/cvt/lloyd.h"
@@ -21,17 +20,12 @@ struct Reinsertion {
   bool faces_listed = false;
   std::vector<FaceKey> non_delaunay_faces;
   int nb_steiner = 0;  // added by a rebuild
-  // The flips restored the mesh (no rebuild) and these vertices (sorted) moved after the first
-  // round's flips, beside which `alongside` ran; every other vertex is where it was then.
-  std::vector<int> moved_late;
 };
 
 // Moves the vertices of `mesh` to `target` (3*#V). Fills s.nb_flips, s.nb_stuck_faces,
 // s.nb_short_moves and s.rebuilt.
-// `alongside` (optional): run beside the first round of flips (relocate_vertices).
 Reinsertion reinsert_vertices3(TetMesh& mesh, const ConstrainedFaces& constrained,
                                const std::vector<double>& target, bool local_flips,
-                               double max_flip_leftover, Delaunay3& backend, LloydStep& s,
-                               const std::function<void()>& alongside = nullptr);
+                               double max_flip_leftover, Delaunay3& backend, LloydStep& s);
 
 }  // namespace cvtmesh

@@ -97,8 +97,7 @@ void first_round_moves(TetMesh& m, const VertexTets& star, const std::vector<dou
 }  // namespace
 
 RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
-                                const std::vector<double>& target, int max_rounds,
-                                const std::function<void()>& alongside_first_flips) {
+                                const std::vector<double>& target, int max_rounds) {
   RelocateStats st;
   std::vector<int> pending;
   for (int v = 0; v < m.nb_vertices(); ++v)
@@ -128,12 +127,11 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
     // move above kept it so); later rounds only the stars of what they moved.
     RestoreDelaunayStats rs;
     if (st.rounds == 1) {
-      rs = restore_delaunay_by_flips(m, cf, /*check_orientation=*/false, alongside_first_flips);
+      rs = restore_delaunay_by_flips(m, cf, /*check_orientation=*/false);
     } else {
       std::vector<int> tets;
       for (int v : moved) tets.insert(tets.end(), star.begin_of(v), star.end_of(v));
       rs = restore_delaunay_in(m, cf, tets);
-      st.moved_late.insert(st.moved_late.end(), moved.begin(), moved.end());
     }
     st.nb_flips += rs.nb_flips23 + rs.nb_flips32;
     delaunay = delaunay && rs.ok;  // faces left stuck earlier are not tested again
@@ -142,8 +140,6 @@ RelocateStats relocate_vertices(TetMesh& m, const ConstrainedFaces& cf,
     pending.swap(left);
     if (pending.empty()) break;
   }
-  std::sort(st.moved_late.begin(), st.moved_late.end());
-  st.moved_late.erase(std::unique(st.moved_late.begin(), st.moved_late.end()), st.moved_late.end());
   st.nb_pending = static_cast<int>(pending.size());
   st.ok = pending.empty() && delaunay;
   return st;

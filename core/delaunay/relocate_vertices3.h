@@ -4,7 +4,6 @@
 // (restore_delaunay3.h) and the vertices that did not reach their targets try again, for a few
 // rounds. The Lloyd re-insertion step when the moves are small.
 #pragma once
-#include <functional>
 #include <vector>
 
 #include "core/mesh/face_key.h"
@@ -22,19 +21,13 @@ struct RelocateStats {
   // Every unconstrained face that may be non-Delaunay on exit (sorted vertex ids; a superset of
   // the nb_stuck faces: a face stuck in one round is not tested again).
   std::vector<FaceKey> stuck_faces;
-  // The vertices moved after the first round (sorted): the others are where the first round
-  // left them.
-  std::vector<int> moved_late;
 };
 
 // `target`: 3*#V coordinates (fixed vertices must keep theirs). On entry `mesh` is valid with its
 // adjacency built. On exit it is valid (positively oriented, same constrained triangles) whether
 // or not `ok`; if not ok, some vertices are between their old and target positions or some face
 // is not locally Delaunay, and the caller rebuilds the tetrahedralization from the targets.
-// `alongside_first_flips` (optional) runs beside the first round's flips (see
-// restore_delaunay_by_flips): the coordinates are then those of the first round.
 RelocateStats relocate_vertices(TetMesh& mesh, const ConstrainedFaces& constrained,
-                                const std::vector<double>& target, int max_rounds = 4,
-                                const std::function<void()>& alongside_first_flips = nullptr);
+                                const std::vector<double>& target, int max_rounds = 4);
 
 }  // namespace cvtmesh

@@ -1,7 +1,6 @@
 #include "core/delaunay/restore_delaunay3.h"
 
 #include <algorithm>
-#include <exception>
 #include <vector>
 
 #include "core/geometry/predicates.h"
@@ -103,8 +102,7 @@ void flip_until_delaunay(TetMesh& m, const ConstrainedFaces& cf,
 }  // namespace
 
 RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFaces& cf,
-                                               bool check_orientation,
-                                               const std::function<void()>& alongside) {
+                                               bool check_orientation) {
   RestoreDelaunayStats st;
   const int nt = m.nb_tets();
   if (check_orientation && last_non_positive_tet(m) >= 0) {
@@ -122,30 +120,7 @@ RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& m, const ConstrainedFace
   for (int t = 0; t < nt; ++t)
     for (int f = 0; f < 4; ++f)
       if (bad[t] >> f & 1) stack.push_back({t, f});
-  if (!alongside) {
-    flip_until_delaunay(m, cf, stack, st);
-    return st;
-  }
-  // The flips on one thread, `alongside` on another (one after the other with one thread);
-  // an exception of either is rethrown here, after both.
-  std::exception_ptr error[2];
-#pragma omp parallel sections
-  {
-#pragma omp section
-    try {
-      flip_until_delaunay(m, cf, stack, st);
-    } catch (...) {
-      error[0] = std::current_exception();
-    }
-#pragma omp section
-    try {
-      alongside();
-    } catch (...) {
-      error[1] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : error)
-    if (e) std::rethrow_exception(e);
+  flip_until_delaunay(m, cf, stack, st);
   return st;
 }
 

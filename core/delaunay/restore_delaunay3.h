@@ -3,7 +3,6 @@
 // the reflex edge of degree three), decided by exact predicates. Much cheaper than rebuilding the
 // tetrahedralization when few faces changed. Constrained faces are never flipped.
 #pragma once
-#include <functional>
 #include <vector>
 
 #include "core/mesh/face_key.h"
@@ -29,11 +28,8 @@ struct RestoreDelaunayStats {
 // compacted on exit. The mesh stays valid (positively oriented, same constrained triangles and
 // region volumes) whether or not `ok`.
 // check_orientation = false: the caller guarantees that every tet is positively oriented.
-// `alongside` (optional) runs on a second thread while the flips run on this one (they are
-// serial): it may read the coordinates, which do not change, and nothing else of the mesh.
 RestoreDelaunayStats restore_delaunay_by_flips(TetMesh& mesh, const ConstrainedFaces& constrained,
-                                               bool check_orientation = true,
-                                               const std::function<void()>& alongside = nullptr);
+                                               bool check_orientation = true);
 
 // The same, when only the tets `tets` (live ids of the current mesh; e.g. the stars of the
 // vertices that moved since the mesh was valid and constrained Delaunay) can have non-Delaunay

@@ -9,7 +9,6 @@
 #include <tuple>
 #include <utility>
 
-#include "core/cvt/lloyd3_cells.h"
 #include "core/cvt/lloyd3_check.h"
 #include "core/cvt/voronoi_cell3.h"
 #include "core/geometry/vec3.h"
@@ -244,42 +243,6 @@ TEST(Lloyd3, SameResultForAnyThreadCount) {
       {1, 2});
   EXPECT_EQ(results[0].xyz, results[1].xyz);  // bitwise
   EXPECT_EQ(results[0].tets, results[1].tets);
-}
-
-// The Lloyd loop evaluates the sizing field at every vertex beside the flips, then again at the
-// vertices that moved after them, from their previous hints (lloyd3_density_of): the values of
-// one whole pass (lloyd3_density) at the final coordinates from the same hints, bit for bit.
-TEST(Lloyd3, DensityOfTheVerticesMovedLaterGivesTheWholePassValues) {
-  const MeshData d = testing::cube_sphere(0.14, 0.1);
-  TetMesh m = d.tet;
-  const auto sizing = make_mesh_sizing3(m);
-  std::vector<int> hints;
-  std::vector<double> H, rho;
-  lloyd3_density(m, *sizing, hints, H, rho);  // the previous iteration's hints
-  for (int h : hints) ASSERT_GE(h, 0);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-0.02, 0.02);
-  for (int v = 0; v < m.nb_vertices(); ++v)
-    if (m.vclass[v].dim == 3)
-      for (int k = 0; k < 3; ++k) m.xyz[3 * v + k] += u(rng);  // the first round's moves
-  std::vector<int> beside_hints = hints;
-  std::vector<double> beside_H, beside_rho;
-  lloyd3_density(m, *sizing, beside_hints, beside_H, beside_rho);
-  std::vector<int> late;  // then some vertices move again
-  for (int v = 0; v < m.nb_vertices(); v += 5)
-    if (m.vclass[v].dim == 3) {
-      late.push_back(v);
-      for (int k = 0; k < 3; ++k) m.xyz[3 * v + k] += u(rng);
-    }
-  ASSERT_GT(late.size(), 10u);
-  for (int v : late) beside_hints[v] = hints[v];
-  lloyd3_density_of(m, *sizing, late, beside_hints, beside_H, beside_rho);
-  std::vector<int> whole_hints = hints;
-  std::vector<double> whole_H, whole_rho;
-  lloyd3_density(m, *sizing, whole_hints, whole_H, whole_rho);
-  EXPECT_EQ(beside_H, whole_H);  // bitwise
-  EXPECT_EQ(beside_rho, whole_rho);
-  EXPECT_EQ(beside_hints, whole_hints);
 }
 
 // The pipeline shares one set of cell buffers between its CVT phases (Lloyd3Options::

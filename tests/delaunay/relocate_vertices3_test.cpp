@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -96,50 +95,6 @@ TEST(RelocateVertices3, LargeMovesKeepTheMeshValid) {
   const int left = relocate_randomly(0.6, 3, /*expect_ok=*/false) +
                    relocate_randomly(1.0, 4, /*expect_ok=*/false);
   EXPECT_GT(left, 0);  // the listing above was exercised
-}
-
-// The work run beside the first round's flips changes nothing in the re-insertion (the same mesh
-// and statistics as without it), runs exactly once, sees the coordinates of the first round
-// (those of every vertex not in moved_late are the final ones), and moved_late lists every vertex
-// whose coordinates changed after it.
-TEST(RelocateVertices3, WorkBesideTheFirstFlipsChangesNothingAndSeesTheirCoordinates) {
-  MeshData d = testing::cube_sphere(0.12, 0.1);
-  TetMesh a = d.tet;
-  Delaunay3::create("tetgen")->retetrahedralize(a);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<double> target = a.xyz;
-  for (int v = 0; v < a.nb_vertices(); ++v) {
-    if (a.vclass[v].dim != 3) continue;
-    for (int k = 0; k < 3; ++k) target[3 * v + k] += 0.4 * 0.12 * u(rng);
-    for (int k = 0; k < 3; ++k) target[3 * v + k] = std::clamp(target[3 * v + k], 0.01, 0.99);
-  }
-  TetMesh b = a;
-  const RelocateStats plain = relocate_vertices(a, constrained_faces(a), target);
-  std::atomic<int> runs{0};
-  std::vector<double> seen;
-  const RelocateStats beside = relocate_vertices(b, constrained_faces(b), target, 4, [&] {
-    ++runs;
-    seen = b.xyz;
-  });
-  EXPECT_EQ(runs.load(), 1);
-  EXPECT_EQ(b.tets, a.tets);
-  EXPECT_EQ(b.adj, a.adj);
-  EXPECT_EQ(b.xyz, a.xyz);
-  EXPECT_EQ(beside.nb_flips, plain.nb_flips);
-  EXPECT_EQ(beside.stuck_faces, plain.stuck_faces);
-  EXPECT_EQ(beside.moved_late, plain.moved_late);
-  ASSERT_EQ(seen.size(), b.xyz.size());
-  EXPECT_TRUE(std::is_sorted(beside.moved_late.begin(), beside.moved_late.end()));
-  int changed = 0;
-  for (int v = 0; v < b.nb_vertices(); ++v) {
-    const bool late = std::binary_search(beside.moved_late.begin(), beside.moved_late.end(), v);
-    const bool moved = seen[3 * v] != b.xyz[3 * v] || seen[3 * v + 1] != b.xyz[3 * v + 1] ||
-                       seen[3 * v + 2] != b.xyz[3 * v + 2];
-    if (moved) EXPECT_TRUE(late) << "vertex " << v;
-    changed += moved;
-  }
-  EXPECT_GT(changed, 0);  // the later rounds were exercised
 }
 
 TEST(RestoreDelaunay3, RefusesAnInvertedMeshWithoutChangingIt) {
