@@ -315,11 +315,12 @@ void dual_tet_pieces(const TetMesh& m, int t, const Vec3& cc, const std::vector<
 }
 
 bool dual_voronoi_cell(const TetMesh& m, const CellMesh& cm, int v, CellIntegrals& out) {
+  // One pass over the star: the sums in star order, abandoned at the first tet without its dual
+  // pieces (the caller then clips the cell and discards `out`).
   out = CellIntegrals{};
-  for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it)
-    if (!cm.dual_ok[*it]) return false;
   for (const int* it = cm.star.begin_of(v); it != cm.star.end_of(v); ++it) {
     const int t = *it;
+    if (!cm.dual_ok[t]) return false;
     const int* tv = &m.tets[4 * t];
     int k = 0;
     while (tv[k] != v) ++k;

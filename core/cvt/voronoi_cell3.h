@@ -48,13 +48,13 @@ CellIntegrals restricted_voronoi_cell(const TetMesh& mesh, const CellMesh& cells
 // The same integrals from the Delaunay dual, without clipping: the cell of an interior vertex of a
 // (locally) Delaunay mesh is the convex hull of the circumcentres of its tets, decomposed into the
 // signed tets (v, mid(vw), cc(face), cc(tet)). Applies when every tet of v's star is
-// CellMesh::dual_ok; returns false otherwise (use restricted_voronoi_cell). For a vertex on the
-// boundary the pieces of its boundary faces lie in those faces' planes: the result is its cell
-// restricted by the boundary triangles' planes — the restricted cell where the boundary is flat
-// (tested to 1e-9 against clipping), within ~1e-4 of its volume on a curved polyhedral surface,
-// where only the energy of a fixed vertex's cell is used. The energy of each piece takes rho at
-// the piece's centroid: it differs from the clipped cell's by O(h |grad rho| / rho).
-// The density is the one CellMesh was prepared with.
+// CellMesh::dual_ok; returns false otherwise (`out` then partial: use restricted_voronoi_cell). For
+// a vertex on the boundary the pieces of its boundary faces lie in those faces' planes: the result
+// is its cell restricted by the boundary triangles' planes — the restricted cell where the boundary
+// is flat (tested to 1e-9 against clipping), within ~1e-4 of its volume on a curved polyhedral
+// surface, where only the energy of a fixed vertex's cell is used. The energy of each piece takes
+// rho at the piece's centroid: it differs from the clipped cell's by O(h |grad rho| / rho). The
+// density is the one CellMesh was prepared with.
 bool dual_voronoi_cell(const TetMesh& mesh, const CellMesh& cells, int v, CellIntegrals& out);
 
 // The dual pieces of tet t with circumcentre cc (see CellMesh::dual_piece): for each local vertex

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -83,11 +84,36 @@ void vertex_tets(const TetMesh& mesh, VertexTets& out) {
 }
 
 VertexTets vertex_tets_of(const TetMesh& mesh, const std::vector<int>& vertices) {
-  std::vector<char> wanted(mesh.nb_vertices(), 0);
+  const int nv = mesh.nb_vertices(), nt = mesh.nb_tets();
+  std::vector<char> wanted(nv, 0);
   for (int v : vertices) wanted[v] = 1;
+  // One pass over the tets (fixed blocks in parallel) lists the (vertex, tet) corners of the
+  // wanted vertices, block after block: in tet order for any number of threads. Only those are
+  // then placed (build_stars counts and places over every tet twice, with a count per vertex
+  // and thread: ~6 ms at 1M tets for each of the Lloyd re-insertion's later rounds, which move a
+  // few hundred vertices).
+  constexpr int kBlock = 1 << 16;
+  const int nb = (nt + kBlock - 1) / kBlock;
+  std::vector<std::vector<std::pair<int, int>>> corners(static_cast<std::size_t>(nb));
+#pragma omp parallel for schedule(static, 1) if (nb > 1)
+  for (int b = 0; b < nb; ++b) {
+    const int end = std::min(nt, (b + 1) * kBlock);
+    for (int t = b * kBlock; t < end; ++t) {
+      const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
+      if (tv[0] < 0) continue;
+      for (int k = 0; k < 4; ++k)
+        if (wanted[tv[k]]) corners[b].push_back({tv[k], t});
+    }
+  }
   VertexTets vt;
-  build_stars(
-      mesh, [&wanted](int v) { return wanted[v] != 0; }, vt);
+  vt.offset.assign(static_cast<std::size_t>(nv) + 1, 0);
+  for (const auto& block : corners)
+    for (const auto& [v, t] : block) ++vt.offset[v + 1];
+  for (int v = 0; v < nv; ++v) vt.offset[v + 1] += vt.offset[v];
+  vt.tets.resize(static_cast<std::size_t>(vt.offset[nv]));
+  std::vector<int> fill(vt.offset.begin(), vt.offset.end() - 1);
+  for (const auto& block : corners)
+    for (const auto& [v, t] : block) vt.tets[fill[v]++] = t;
   return vt;
 }
 

@@ -17,12 +17,14 @@ struct CavityFaces {
   std::vector<int> behind;
 };
 
-CavityFaces cavity_faces(const TetMesh& mesh, const std::vector<int>& old_tets,
-                         const char* caller) {
+// Fills `c` (cleared first: its arrays are reused).
+void cavity_faces(const TetMesh& mesh, const std::vector<int>& old_tets, const char* caller,
+                  CavityFaces& c) {
   auto is_old = [&](int t) {
     return std::find(old_tets.begin(), old_tets.end(), t) != old_tets.end();
   };
-  CavityFaces c;
+  c.key.clear();
+  c.behind.clear();
   for (int t : old_tets) {
     const int* tv = &mesh.tets[4 * static_cast<std::size_t>(t)];
     if (tv[0] < 0)
@@ -34,7 +36,6 @@ CavityFaces cavity_faces(const TetMesh& mesh, const std::vector<int>& old_tets,
       c.behind.push_back(behind);
     }
   }
-  return c;
 }
 
 // Every face a = 4i+f of the new tets matched, before anything changes: to another new tet's
@@ -43,33 +44,38 @@ CavityFaces cavity_faces(const TetMesh& mesh, const std::vector<int>& old_tets,
 struct FaceMatch {
   std::vector<int> inner, outer;
   std::vector<char> outer_used;
+  std::vector<FaceKey> keys;  // the new tets' faces (scratch)
 };
 
-FaceMatch match_new_faces(const CavityFaces& cavity,
-                          const std::vector<std::array<int, 4>>& new_tets) {
+bool same_key(const FaceKey& a, const FaceKey& b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+// Fills `m` (its arrays are reused).
+void match_new_faces(const CavityFaces& cavity, const std::vector<std::array<int, 4>>& new_tets,
+                     FaceMatch& m) {
   const int nb_new = static_cast<int>(new_tets.size());
-  std::vector<FaceKey> keys(4 * static_cast<std::size_t>(nb_new));
+  std::vector<FaceKey>& keys = m.keys;
+  keys.resize(4 * static_cast<std::size_t>(nb_new));
   for (int i = 0; i < nb_new; ++i) {
     const auto& nt = new_tets[i];
     for (int f = 0; f < 4; ++f)
       keys[4 * i + f] = face_key(nt[kTetFace[f][0]], nt[kTetFace[f][1]], nt[kTetFace[f][2]]);
   }
-  FaceMatch m;
   m.inner.assign(keys.size(), -1);
   m.outer.assign(keys.size(), -1);
   m.outer_used.assign(cavity.key.size(), 0);
   for (int a = 0; a < 4 * nb_new; ++a) {
     for (int b = 0; b < 4 * nb_new && m.inner[a] < 0; ++b)
-      if (b / 4 != a / 4 && keys[b] == keys[a]) m.inner[a] = b;
+      if (b / 4 != a / 4 && same_key(keys[b], keys[a])) m.inner[a] = b;
     if (m.inner[a] >= 0) continue;
     for (std::size_t o = 0; o < cavity.key.size(); ++o)
-      if (!m.outer_used[o] && cavity.key[o] == keys[a]) {
+      if (!m.outer_used[o] && same_key(cavity.key[o], keys[a])) {
         m.outer_used[o] = 1;
         m.outer[a] = static_cast<int>(o);
         break;
       }
   }
-  return m;
 }
 
 // The adjacency of the new tets (in `slots`) and of the tets behind the cavity: a face matched
@@ -99,8 +105,12 @@ void apply_swap(TetMesh& mesh, SwapPlan& plan, std::vector<int>* free_slots) {
   const auto& old_tets = plan.old_tets;
   const int nb_old = static_cast<int>(old_tets.size());
   const int nb_new = static_cast<int>(plan.new_tets.size());
-  const CavityFaces cavity = cavity_faces(mesh, old_tets, "apply_swap");
-  const FaceMatch match = match_new_faces(cavity, plan.new_tets);
+  // Per-thread arrays reused from one swap to the next (the Lloyd iteration's serial Delaunay
+  // flips apply ~10^4-10^5 swaps: 5 allocations each otherwise).
+  thread_local CavityFaces cavity;
+  thread_local FaceMatch match;
+  cavity_faces(mesh, old_tets, "apply_swap", cavity);
+  match_new_faces(cavity, plan.new_tets, match);
   for (std::size_t a = 0; a < match.inner.size(); ++a)
     if (match.inner[a] < 0 && match.outer[a] < 0)
       throw InvariantError(
@@ -154,8 +164,10 @@ std::vector<int> apply_boundary_retriangulation(TetMesh& mesh, const std::vector
                                                 int region) {
   if (mesh.adj.size() != mesh.tets.size())
     throw std::invalid_argument("apply_boundary_retriangulation: adjacency not built");
-  const CavityFaces cavity = cavity_faces(mesh, old_tets, "apply_boundary_retriangulation");
-  const FaceMatch match = match_new_faces(cavity, new_tets);
+  CavityFaces cavity;
+  FaceMatch match;
+  cavity_faces(mesh, old_tets, "apply_boundary_retriangulation", cavity);
+  match_new_faces(cavity, new_tets, match);
   for (std::size_t o = 0; o < cavity.key.size(); ++o)
     if (!match.outer_used[o] && cavity.behind[o] >= 0)
       throw InvariantError(

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <thread>
 
 #include "core/mesh/check_mesh.h"
+#include "core/swap/apply_swap.h"
 #include "core/swap/flip32.h"
 #include "tests/swap/swap_test_util.h"
 
@@ -121,6 +124,37 @@ TEST(Flip23, CriterionRejectsAFlipThatLowersTheMinimumAndTheInverseOfAnAcceptedO
   EXPECT_EQ(inverse.status, SwapStatus::kRejected);
   EXPECT_EQ(tet_vertex_sets(m), after);
   EXPECT_TRUE(check_mesh(m).ok);
+}
+
+// apply_swap reuses per-thread arrays from one swap to the next: what a larger swap and a swap
+// that threw half-way (a dead tet in its cavity) leave in them changes nothing in the next swap,
+// which gives the same mesh as in a fresh thread.
+TEST(Flip23, ApplySwapGivesTheSameMeshAfterOtherSwapsInTheSameThread) {
+  TetMesh fresh = two_tets(-1, 1), reused = fresh;
+  const ConstrainedFaces none;
+  SwapPlan fresh_plan = plan_flip23(fresh, none, 0, face_opposite(fresh, 0, 3));
+  SwapPlan reused_plan = fresh_plan;
+  ASSERT_EQ(fresh_plan.status, SwapStatus::kOk);
+  std::thread([&] { apply_swap(fresh, fresh_plan); }).join();
+  // This thread first: a 3-2 flip (a larger cavity), then a swap that throws after listing the
+  // faces of its first tet.
+  {
+    TetMesh m = two_tets(-1, 1);
+    ASSERT_EQ(flip23(m, 0, face_opposite(m, 0, 3)).status, SwapStatus::kOk);
+    int t = 0;
+    while (m.tets[4 * t] < 0) ++t;
+    ASSERT_EQ(flip32(m, t, testing::local_edge(m, t, 3, 4)).status, SwapStatus::kOk);
+    TetMesh dead = two_tets(-1, 1);
+    SwapPlan bad = plan_flip23(dead, none, 0, face_opposite(dead, 0, 3));
+    ASSERT_EQ(bad.status, SwapStatus::kOk);
+    dead.tets[4] = -1;  // tet 1, the plan's second old tet, is dead now
+    EXPECT_THROW(apply_swap(dead, bad), std::invalid_argument);
+  }
+  apply_swap(reused, reused_plan);
+  EXPECT_EQ(reused.tets, fresh.tets);
+  EXPECT_EQ(reused.adj, fresh.adj);
+  EXPECT_EQ(reused_plan.new_ids, fresh_plan.new_ids);
+  EXPECT_TRUE(check_mesh(reused).ok);
 }
 
 }  // namespace
