@@ -38,6 +38,8 @@ class ProgressDisplay {
   void finish();
   // The run has succeeded: ends the current phase and prints the lines still held.
   void done();
+  // -q: nothing is drawn (the caller need not report).
+  bool quiet() const { return mode_ == Mode::kQuiet; }
 
  private:
   void show(bool force);
